@@ -1,0 +1,74 @@
+#pragma once
+// The one interface every graphics API hides behind. The harness hands a
+// backend a program as published plus the values to bind, and gets floats
+// back; what the API needs to do that (transform feedback, SPIR-V
+// post-passes, descriptor layouts) stays inside the backend.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/values.h"
+
+namespace snell {
+
+enum class Profile { Core, Compatibility };
+
+struct ProgramSource {
+  std::string vertex;        // GLSL text, exactly as in the file
+  std::string fragment;      // may be empty for capture-only probes
+  std::string vertexPath;    // for diagnostics only
+  std::string fragmentPath;
+  Profile profile = Profile::Core;
+};
+
+// What the driver says about itself; goes into every result and golden.
+struct DriverInfo {
+  std::string api;            // "OpenGL" / "Vulkan"
+  std::string apiVersion;     // "4.5 (Core Profile) Mesa 22.3.6" / "1.3.230"
+  std::string renderer;       // "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string driverVersion;  // "Mesa 22.3.6"
+  std::string deviceType;     // "cpu", "integrated-gpu", ...
+};
+
+struct CompileOutcome {
+  bool ok = false;
+  std::string log;  // compiler/linker diagnostics, empty when clean
+};
+
+struct CaptureJob {
+  ProgramSource program;
+  UniformMap uniforms;          // by GLSL name; names the program lacks are ignored
+  AttributeMap attributes;      // by GLSL name
+  std::vector<std::string> varyings;  // vertex outputs to read back, in order
+  std::size_t vertexCount = 0;
+};
+
+struct CaptureOutcome {
+  CompileOutcome compile;                 // !compile.ok => varyings is empty
+  std::vector<CapturedVarying> varyings;  // same order as CaptureJob::varyings
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;  // "gl" or "vk"
+  virtual DriverInfo driverInfo() const = 0;
+
+  // Compiles (and links) the program without running it.
+  virtual CompileOutcome compile(const ProgramSource& program) = 0;
+
+  // Runs the vertex stage once per vertex and reads back the named outputs
+  // as fp32, one value per vertex, in vertex order. Throws SetupError when
+  // the API itself fails (not for a compile error).
+  virtual CaptureOutcome captureVertexOutputs(const CaptureJob& job) = 0;
+};
+
+struct BackendOptions {
+  bool validation = false;  // Vulkan: enable VK_LAYER_KHRONOS_validation, any message is an error
+};
+
+// "gl" or "vk"; throws UsageError for an unknown name, SetupError when the
+// API cannot be brought up on this machine.
+std::unique_ptr<Backend> makeBackend(const std::string& name, const BackendOptions& options);
+
+}  // namespace snell

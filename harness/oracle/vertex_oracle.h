@@ -1,0 +1,50 @@
+#pragma once
+// What the harness asks of a listing's oracle: given the same uniforms,
+// constants and vertex inputs that the backend got, say for every captured
+// output component what exact math gives (double), what a strict fp32
+// machine gives (float), and which fp32 results the GLSL 4.60 / Vulkan
+// precision rules allow ([lo, hi]).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/values.h"
+
+namespace snell {
+
+struct OracleVarying {
+  std::string name;
+  int components = 1;
+  // All four vectors hold vertexCount * components entries, vertex-major.
+  std::vector<double> reference;  // the listing evaluated in double
+  std::vector<float> strict;      // the listing evaluated in float
+  std::vector<double> lo, hi;     // the fp32 results the spec allows
+  // 1 where the spec leaves the component undefined (pow of a negative
+  // base, NaN, ...): such samples are reported as non-portable, not gated.
+  std::vector<std::uint8_t> undefined;
+};
+
+struct OracleInput {
+  const UniformMap& uniforms;      // by the listing's GLSL names
+  const ConstantMap& constants;    // the listing's constants as printed (manifest `constants`)
+  const AttributeMap& attributes;  // by the listing's GLSL names
+  std::size_t vertexCount = 0;
+};
+
+class VertexOracle {
+ public:
+  virtual ~VertexOracle() = default;
+  // The outputs it computes (GLSL names), in the order evaluate() returns them.
+  virtual std::vector<std::string> outputs() const = 0;
+  // Throws UsageError when a uniform, constant or attribute it needs is missing
+  // or has the wrong type.
+  virtual std::vector<OracleVarying> evaluate(const OracleInput& input) const = 0;
+};
+
+// The oracle registered under `name` (a manifest's `oracle` field); throws
+// UsageError naming the known oracles when there is none.
+std::unique_ptr<VertexOracle> makeVertexOracle(const std::string& name);
+std::vector<std::string> vertexOracleNames();
+
+}  // namespace snell
