@@ -7,19 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "core/program_source.h"
 #include "core/values.h"
 
 namespace snell {
-
-enum class Profile { Core, Compatibility };
-
-struct ProgramSource {
-  std::string vertex;        // GLSL text, exactly as in the file
-  std::string fragment;      // may be empty for capture-only probes
-  std::string vertexPath;    // for diagnostics only
-  std::string fragmentPath;
-  Profile profile = Profile::Core;
-};
 
 // What the driver says about itself; goes into every result and golden.
 struct DriverInfo {

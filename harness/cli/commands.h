@@ -1,0 +1,20 @@
+#pragma once
+// Each subcommand registers its options on the app and returns the function
+// that runs it. The functions return the process exit code: 0 nothing
+// failed, 1 something failed, 2 usage or set-up error.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace snell::cli {
+
+using Command = std::function<int()>;
+
+Command addRunCommand(CLI::App& app);
+Command addListCommand(CLI::App& app);
+Command addEvalCommand(CLI::App& app);
+
+// The repository's own listings and goldens, where the binary was built from.
+std::string defaultShadersDir();
+std::string defaultGoldenDir();
+
+}  // namespace snell::cli

@@ -1,0 +1,8 @@
+#include "cli/commands.h"
+
+namespace snell::cli {
+
+std::string defaultShadersDir() { return SNELL_SOURCE_ROOT "/shaders"; }
+std::string defaultGoldenDir() { return SNELL_SOURCE_ROOT "/golden"; }
+
+}  // namespace snell::cli

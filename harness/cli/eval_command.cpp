@@ -1,0 +1,49 @@
+#include <fmt/format.h>
+
+#include <fstream>
+#include <iostream>
+
+#include "backends/backend.h"
+#include "cli/commands.h"
+#include "core/errors.h"
+#include "runner/builtin_eval.h"
+
+namespace snell::cli {
+
+Command addEvalCommand(CLI::App& app) {
+  CLI::App* eval = app.add_subcommand(
+      "eval", "Evaluate reflect/refract calls given as JSON Lines, on the oracle or a driver");
+  struct Options {
+    std::string backend = "oracle";
+    std::string input = "-";
+  };
+  auto options = std::make_shared<Options>();
+  eval->add_option("--backend", options->backend, "oracle, gl or vk")
+      ->check(CLI::IsMember({"oracle", "gl", "vk"}));
+  eval->add_option("input", options->input, "JSON Lines file, or - for standard input");
+  eval->footer(R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
+vectors of 1 to 4 components. Each answer: value, lo and hi (the fp32 interval the spec
+allows); on gl and vk also exact, within_spec and slack.)");
+  return [options] {
+    std::ifstream file;
+    std::istream* in = &std::cin;
+    if (options->input != "-") {
+      file.open(options->input);
+      if (!file)
+        throw UsageError(fmt::format("{}: cannot read this file; give a JSON Lines file or -",
+                                     options->input));
+      in = &file;
+    }
+    std::unique_ptr<Backend> backend;
+    if (options->backend != "oracle") backend = makeBackend(options->backend, {});
+    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get());
+    if (summary.malformed) {
+      fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
+                 summary.malformed, options->input == "-" ? "standard input" : options->input);
+      return 2;
+    }
+    return summary.outsideSpec ? 1 : 0;
+  };
+}
+
+}  // namespace snell::cli

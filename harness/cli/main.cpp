@@ -1,0 +1,46 @@
+// snell: a conformance suite and CI gate for reflection and refraction shaders.
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <exception>
+#include <map>
+
+#include "cli/commands.h"
+#include "core/errors.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"snell: runs published reflection/refraction GLSL listings on OpenGL and Vulkan "
+               "and holds the results against a spec-derived CPU oracle"};
+  app.require_subcommand(1);
+  std::map<const CLI::App*, snell::cli::Command> commands;
+  for (auto add : {snell::cli::addRunCommand, snell::cli::addListCommand,
+                   snell::cli::addEvalCommand}) {
+    const std::size_t before = app.get_subcommands({}).size();
+    snell::cli::Command run = add(app);
+    commands[app.get_subcommands({}).at(before)] = std::move(run);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::CallForAllHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    app.exit(error);
+    return 2;
+  }
+  try {
+    for (const auto& [sub, run] : commands)
+      if (sub->parsed()) return run();
+  } catch (const snell::UsageError& error) {
+    fmt::print(stderr, "snell: {}\n", error.what());
+    return 2;
+  } catch (const snell::SetupError& error) {
+    fmt::print(stderr, "snell: set-up error: {}\n", error.what());
+    return 2;
+  } catch (const std::exception& error) {
+    fmt::print(stderr, "snell: internal error: {}\n", error.what());
+    return 2;
+  }
+  return 2;
+}

@@ -1,0 +1,117 @@
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "backends/backend.h"
+#include "cli/commands.h"
+#include "core/case.h"
+#include "core/errors.h"
+#include "report/atomic_file.h"
+#include "report/json_results.h"
+#include "report/junit.h"
+#include "report/summary_table.h"
+#include "runner/case_runner.h"
+
+namespace snell::cli {
+namespace {
+
+struct RunOptions {
+  std::string backend = "all";
+  std::string filter;
+  std::string shaders = defaultShadersDir();
+  std::string golden = defaultGoldenDir();
+  std::string json;
+  std::string junit;
+  bool validation = false;
+};
+
+// Everything a case needs is read before any driver is loaded, so a broken
+// manifest or a missing stage file stops the run with exit 2 up front.
+void validateCases(const std::vector<Case>& cases, SceneCache& scenes) {
+  for (const Case& c : cases) {
+    loadProgram(*c.manifest);
+    resolveBindings(*c.manifest, scenes.get(c.spec.scene));
+    makeVertexOracle(c.manifest->oracle);
+  }
+}
+
+void printThroughput(const std::vector<CaseResult>& results) {
+  std::map<std::string, std::pair<std::size_t, double>> perBackend;  // components, seconds
+  std::map<std::string, double> worst;
+  for (const CaseResult& r : results) {
+    perBackend[r.backend].first += r.componentsChecked();
+    perBackend[r.backend].second += r.backendSeconds;
+    worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
+  }
+  for (const auto& [backend, totals] : perBackend)
+    fmt::print("{}: {} components checked, {:.0f} per second of backend time, worst slack {:.3f}\n",
+               backend, totals.first, totals.second > 0 ? totals.first / totals.second : 0.0,
+               worst[backend]);
+}
+
+int run(const RunOptions& options) {
+  if (!std::filesystem::is_directory(options.golden))
+    throw UsageError(fmt::format("{}: no such golden folder; pass --golden DIR", options.golden));
+  const std::vector<Manifest> manifests = loadManifests(options.shaders);
+  const std::vector<Case> cases = expandCases(manifests, options.filter);
+  if (cases.empty())
+    throw UsageError(fmt::format("no case matches --filter '{}'; `snell list` shows the ids",
+                                 options.filter));
+  SceneCache scenes;
+  validateCases(cases, scenes);
+
+  std::vector<std::string> backends =
+      options.backend == "all" ? std::vector<std::string>{"gl", "vk"}
+                               : std::vector<std::string>{options.backend};
+  std::unique_ptr<StreamingFile> json;
+  if (!options.json.empty()) json = std::make_unique<StreamingFile>(options.json);
+
+  OracleCache oracles;
+  std::vector<CaseResult> results;
+  const std::size_t total = cases.size() * backends.size();
+  for (const std::string& name : backends) {
+    BackendOptions backendOptions;
+    backendOptions.validation = options.validation;
+    std::unique_ptr<Backend> backend = makeBackend(name, backendOptions);
+    CaseRunner runner(*backend, oracles, scenes);
+    for (const Case& c : cases) {
+      CaseResult result = runner.run(c);
+      fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", results.size() + 1, total, name, c.id,
+                 statusName(result.status), result.seconds);
+      if (json) json->writeLine(toJson(result).dump());
+      results.push_back(std::move(result));
+    }
+  }
+  if (json) json->commit();
+  if (!options.junit.empty()) writeFileAtomically(options.junit, toJUnitXml(results));
+
+  printSummaryTable(std::cout, results);
+  printThroughput(results);
+  bool failed = false;
+  for (const CaseResult& r : results) {
+    if (!isFailure(r.status)) continue;
+    failed = true;
+    fmt::print("\n{} on {}: {}\n{}", r.caseId, r.backend, statusName(r.status), r.message);
+  }
+  return failed ? 1 : 0;
+}
+
+}  // namespace
+
+Command addRunCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("run", "Run the conformance cases and gate on the results");
+  auto options = std::make_shared<RunOptions>();
+  sub->add_option("--backend", options->backend, "gl, vk or all")
+      ->check(CLI::IsMember({"gl", "vk", "all"}));
+  sub->add_option("--filter", options->filter, "Only cases whose id matches this glob");
+  sub->add_option("--shaders", options->shaders, "Folder of listings")->check(CLI::ExistingDirectory);
+  sub->add_option("--golden", options->golden, "Folder of blessed goldens");
+  sub->add_option("--json", options->json, "Write results as JSON Lines, one object per case");
+  sub->add_option("--junit", options->junit, "Write results as JUnit XML");
+  sub->add_flag("--validation", options->validation,
+                "Vulkan: run under the Khronos validation layer; any message fails the case");
+  return [options] { return run(*options); };
+}
+
+}  // namespace snell::cli

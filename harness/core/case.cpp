@@ -1,0 +1,68 @@
+#include "core/case.h"
+
+#include <fmt/format.h>
+#include <fnmatch.h>
+
+#include <algorithm>
+
+#include "core/errors.h"
+
+namespace snell {
+
+std::vector<Case> expandCases(const std::vector<Manifest>& manifests, const std::string& glob) {
+  std::vector<Case> cases;
+  for (const Manifest& manifest : manifests)
+    for (const CaseSpec& spec : manifest.cases) {
+      Case c{manifest.id + "/" + spec.scene, &manifest, spec};
+      if (glob.empty() || fnmatch(glob.c_str(), c.id.c_str(), 0) == 0) cases.push_back(std::move(c));
+    }
+  return cases;
+}
+
+namespace {
+
+[[noreturn]] void unknownSemantic(const Manifest& manifest, const Binding& binding,
+                                  const Scene& scene, const std::string& semantic) {
+  std::vector<std::string> known;
+  for (const auto& [name, value] : scene.values) known.push_back("scene." + name);
+  for (const auto& [name, value] : scene.attributes) known.push_back("scene." + name);
+  for (const std::string& name : scene.samplers) known.push_back("scene." + name);
+  throw UsageError(fmt::format("{}:{}: `{}` is bound to scene.{}, which scene `{}` does not "
+                               "provide; it provides {}",
+                               manifest.path.string(), binding.line, binding.name, semantic,
+                               scene.name, fmt::format("{}", fmt::join(known, ", "))));
+}
+
+}  // namespace
+
+ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
+  ResolvedBindings out;
+  out.vertexCount = scene.vertexCount;
+  for (const Binding& binding : manifest.uniforms) {
+    if (const Value* literal = std::get_if<Value>(&binding.source)) {
+      out.uniforms[binding.name] = *literal;
+      continue;
+    }
+    const std::string& semantic = std::get<std::string>(binding.source);
+    if (auto it = scene.values.find(semantic); it != scene.values.end())
+      out.uniforms[binding.name] = it->second;
+    else if (std::find(scene.samplers.begin(), scene.samplers.end(), semantic) == scene.samplers.end())
+      unknownSemantic(manifest, binding, scene, semantic);
+    // Samplers are bound by the pixel path; the vertex stage does not read them.
+  }
+  for (const Binding& binding : manifest.inputs) {
+    if (std::holds_alternative<Value>(binding.source))
+      throw UsageError(fmt::format("{}:{}: input `{}` must name a per-vertex scene semantic "
+                                   "(scene.position, scene.normal), not a literal",
+                                   manifest.path.string(), binding.line, binding.name));
+    const std::string& semantic = std::get<std::string>(binding.source);
+    auto it = scene.attributes.find(semantic);
+    if (it == scene.attributes.end()) unknownSemantic(manifest, binding, scene, semantic);
+    AttributeStream stream = it->second;
+    stream.name = binding.name;
+    out.attributes[binding.name] = std::move(stream);
+  }
+  return out;
+}
+
+}  // namespace snell

@@ -1,0 +1,243 @@
+#include "core/manifest.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ManifestReader {
+ public:
+  explicit ManifestReader(fs::path path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(int line, const std::string& what) const {
+    if (line > 0) throw UsageError(fmt::format("{}:{}: {}", path_.string(), line, what));
+    throw UsageError(fmt::format("{}: {}", path_.string(), what));
+  }
+
+  static int lineOf(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+
+  std::string requiredString(const toml::table& table, std::string_view key, int tableLine) const {
+    const toml::node* node = table.get(key);
+    if (!node) fail(tableLine, fmt::format("missing field `{}`; add it (see shaders/README.md)", key));
+    if (!node->is_string()) fail(lineOf(*node), fmt::format("`{}` must be a string", key));
+    return std::string(*node->value<std::string>());
+  }
+
+  std::string optionalString(const toml::table& table, std::string_view key) const {
+    const toml::node* node = table.get(key);
+    if (!node) return {};
+    if (!node->is_string()) fail(lineOf(*node), fmt::format("`{}` must be a string", key));
+    return std::string(*node->value<std::string>());
+  }
+
+  const toml::table& requiredTable(const toml::table& table, std::string_view key,
+                                   int tableLine) const {
+    const toml::node* node = table.get(key);
+    if (!node) fail(tableLine, fmt::format("missing table `{}`; add it (see shaders/README.md)", key));
+    if (!node->is_table()) fail(lineOf(*node), fmt::format("`{}` must be a table", key));
+    return *node->as_table();
+  }
+
+  std::vector<std::string> stringArray(const toml::node& node, std::string_view key) const {
+    const toml::array* array = node.as_array();
+    if (!array) fail(lineOf(node), fmt::format("`{}` must be an array of strings", key));
+    std::vector<std::string> out;
+    for (const toml::node& element : *array) {
+      if (!element.is_string())
+        fail(lineOf(element), fmt::format("`{}` must hold strings only", key));
+      out.emplace_back(*element.value<std::string>());
+    }
+    return out;
+  }
+
+  static bool numeric(const toml::node& node) { return node.is_floating_point() || node.is_integer(); }
+
+  // A literal: a number, an array of 2-4 numbers (a vector), or
+  // { type = "mat3", value = [...] } for the cases a length cannot tell.
+  Value literal(const toml::node& node, const std::string& name) const {
+    if (numeric(node)) return Value{ValueType::Float, {static_cast<float>(*node.value<double>())}};
+    ValueType type{};
+    const toml::array* array = nullptr;
+    if (const toml::table* typed = node.as_table()) {
+      const std::string typeName = requiredString(*typed, "type", lineOf(node));
+      static const std::pair<const char*, ValueType> kTypes[] = {
+          {"float", ValueType::Float}, {"vec2", ValueType::Vec2}, {"vec3", ValueType::Vec3},
+          {"vec4", ValueType::Vec4},   {"mat3", ValueType::Mat3}, {"mat4", ValueType::Mat4}};
+      auto it = std::find_if(std::begin(kTypes), std::end(kTypes),
+                             [&](const auto& entry) { return typeName == entry.first; });
+      if (it == std::end(kTypes))
+        fail(lineOf(node), fmt::format("`{}`: unknown type `{}`; use float, vec2, vec3, vec4, "
+                                       "mat3 or mat4", name, typeName));
+      type = it->second;
+      const toml::node* value = typed->get("value");
+      if (!value) fail(lineOf(node), fmt::format("`{}`: missing `value`", name));
+      array = value->as_array();
+      if (!array) fail(lineOf(*value), fmt::format("`{}`: `value` must be an array", name));
+    } else if ((array = node.as_array())) {
+      if (array->size() < 2 || array->size() > 4)
+        fail(lineOf(node), fmt::format("`{}`: a vector literal has 2 to 4 numbers, this one has {}; "
+                                       "write a matrix as {{ type = \"mat4\", value = [...] }}",
+                                       name, array->size()));
+      type = static_cast<ValueType>(static_cast<int>(ValueType::Vec2) + array->size() - 2);
+    } else {
+      fail(lineOf(node), fmt::format("`{}` must be \"scene.<semantic>\", a number, an array or "
+                                     "{{ type = ..., value = [...] }}", name));
+    }
+    Value out{type, {}};
+    if (static_cast<int>(array->size()) != componentCount(type))
+      fail(lineOf(node), fmt::format("`{}`: a {} has {} components, the manifest gives {}", name,
+                                     glslTypeName(type), componentCount(type), array->size()));
+    for (const toml::node& element : *array) {
+      if (!numeric(element)) fail(lineOf(element), fmt::format("`{}`: not a number", name));
+      out.data.push_back(static_cast<float>(*element.value<double>()));
+    }
+    return out;
+  }
+
+  std::vector<Binding> bindings(const toml::table& root, std::string_view key) const {
+    std::vector<Binding> out;
+    const toml::node* node = root.get(key);
+    if (!node) return out;
+    const toml::table* table = node->as_table();
+    if (!table) fail(lineOf(*node), fmt::format("`{}` must be a table", key));
+    for (const auto& [name, value] : *table) {
+      Binding binding{std::string(name.str()), std::string(), lineOf(value)};
+      if (value.is_string()) {
+        const std::string text(*value.value<std::string>());
+        if (text.rfind("scene.", 0) != 0)
+          fail(binding.line, fmt::format("`{}` = \"{}\": a binding string names a scene semantic "
+                                         "and starts with \"scene.\"", binding.name, text));
+        binding.source = text.substr(6);
+      } else {
+        binding.source = literal(value, binding.name);
+      }
+      out.push_back(std::move(binding));
+    }
+    return out;
+  }
+
+  Manifest read() const {
+    toml::table root;
+    try {
+      root = toml::parse_file(path_.string());
+    } catch (const toml::parse_error& error) {
+      fail(static_cast<int>(error.source().begin.line),
+           fmt::format("not valid TOML: {}", error.description()));
+    }
+    Manifest m;
+    m.path = path_;
+    m.id = requiredString(root, "id", 1);
+    m.title = requiredString(root, "title", 1);
+    const toml::table& source = requiredTable(root, "source", 1);
+    m.source.file = requiredString(source, "file", lineOf(source));
+    m.source.where = requiredString(source, "where", lineOf(source));
+
+    const std::string profile = optionalString(root, "profile");
+    if (profile.empty() || profile == "core") m.profile = Profile::Core;
+    else if (profile == "compatibility") m.profile = Profile::Compatibility;
+    else fail(lineOf(*root.get("profile")), fmt::format("profile `{}`: use core or compatibility", profile));
+
+    const toml::table& stages = requiredTable(root, "stages", 1);
+    m.vertexFile = requiredString(stages, "vertex", lineOf(stages));
+    m.fragmentFile = optionalString(stages, "fragment");
+    m.oracle = requiredString(root, "oracle", 1);
+
+    if (const toml::node* constants = root.get("constants")) {
+      const toml::table* table = constants->as_table();
+      if (!table) fail(lineOf(*constants), "`constants` must be a table of numbers");
+      for (const auto& [name, value] : *table) {
+        if (!numeric(value))
+          fail(lineOf(value), fmt::format("constant `{}` must be a number", name.str()));
+        m.constants[std::string(name.str())] = *value.value<double>();
+      }
+    }
+    m.inputs = bindings(root, "inputs");
+    m.uniforms = bindings(root, "uniforms");
+
+    const toml::table& capture = requiredTable(root, "capture", 1);
+    if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
+    if (m.captureVertex.empty()) fail(lineOf(capture), "`capture.vertex` names no output to read back");
+
+    const toml::node* cases = root.get("case");
+    if (!cases) fail(1, "no [[case]]: add at least one, e.g. [[case]] scene = \"sphere\"");
+    const toml::array* caseArray = cases->as_array();
+    if (!caseArray || !caseArray->is_array_of_tables())
+      fail(lineOf(*cases), "`case` must be written as [[case]] tables");
+    for (const toml::node& node : *caseArray) {
+      const toml::table& table = *node.as_table();
+      CaseSpec spec;
+      spec.line = lineOf(node);
+      spec.scene = requiredString(table, "scene", spec.line);
+      if (const toml::node* checks = table.get("checks")) spec.checks = stringArray(*checks, "checks");
+      else spec.checks = {"vectors"};
+      for (const std::string& check : spec.checks)
+        if (check != "vectors")
+          fail(spec.line, fmt::format("check `{}` is not known; use \"vectors\"", check));
+      m.cases.push_back(std::move(spec));
+    }
+    return m;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string readFile(const fs::path& path, const fs::path& manifest, const char* what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw UsageError(fmt::format("{}: {} file {} cannot be read; check `stages` in the manifest",
+                                 manifest.string(), what, path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+Manifest loadManifest(const fs::path& path) {
+  if (!fs::is_regular_file(path))
+    throw UsageError(fmt::format("{}: no such manifest file", path.string()));
+  return ManifestReader(path).read();
+}
+
+std::vector<Manifest> loadManifests(const fs::path& dir) {
+  if (!fs::is_directory(dir))
+    throw UsageError(fmt::format("{}: not a folder of listings; pass --shaders DIR", dir.string()));
+  std::vector<Manifest> manifests;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file() && entry.path().filename() == "manifest.toml")
+      manifests.push_back(loadManifest(entry.path()));
+  std::sort(manifests.begin(), manifests.end(),
+            [](const Manifest& a, const Manifest& b) { return a.id < b.id; });
+  for (std::size_t k = 1; k < manifests.size(); ++k)
+    if (manifests[k].id == manifests[k - 1].id)
+      throw UsageError(fmt::format("{}: id `{}` is also used by {}; ids must be unique",
+                                   manifests[k].path.string(), manifests[k].id,
+                                   manifests[k - 1].path.string()));
+  return manifests;
+}
+
+ProgramSource loadProgram(const Manifest& manifest) {
+  const fs::path dir = manifest.path.parent_path();
+  ProgramSource program;
+  program.profile = manifest.profile;
+  program.vertexPath = (dir / manifest.vertexFile).string();
+  program.vertex = readFile(program.vertexPath, manifest.path, "vertex");
+  if (!manifest.fragmentFile.empty()) {
+    program.fragmentPath = (dir / manifest.fragmentFile).string();
+    program.fragment = readFile(program.fragmentPath, manifest.path, "fragment");
+  }
+  return program;
+}
+
+}  // namespace snell

@@ -1,0 +1,59 @@
+#pragma once
+// A listing's manifest: everything listing-specific, so the harness stays
+// generic and a user can gate their own shaders by writing one.
+#include <filesystem>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/program_source.h"
+#include "core/values.h"
+
+namespace snell {
+
+struct SourceCitation {
+  std::string file;   // a file in shared/sources, or a user's own reference
+  std::string where;  // "Listings 14.1 and 14.2"
+};
+
+// A uniform or input bound either to a scene semantic ("scene.modelview")
+// or to a literal value written in the manifest.
+struct Binding {
+  std::string name;                          // the GLSL name
+  std::variant<std::string, Value> source;   // semantic (without "scene.") or literal
+  int line = 0;                              // where it is written, for messages
+};
+
+struct CaseSpec {
+  std::string scene;
+  std::vector<std::string> checks;  // "vectors", later "image"
+  int line = 0;
+};
+
+struct Manifest {
+  std::filesystem::path path;  // the manifest file
+  std::string id;
+  std::string title;
+  SourceCitation source;
+  Profile profile = Profile::Core;
+  std::string vertexFile;      // relative to the manifest's folder
+  std::string fragmentFile;
+  std::string oracle;
+  ConstantMap constants;
+  std::vector<Binding> inputs;
+  std::vector<Binding> uniforms;
+  std::vector<std::string> captureVertex;
+  std::vector<CaseSpec> cases;
+};
+
+// Parses one manifest. Every problem is a UsageError of the form
+// "FILE:LINE: what is wrong; what to do".
+Manifest loadManifest(const std::filesystem::path& path);
+
+// Every manifest.toml below `dir`, sorted by id; duplicate ids are an error.
+std::vector<Manifest> loadManifests(const std::filesystem::path& dir);
+
+// The stage files as published; a missing file is a UsageError.
+ProgramSource loadProgram(const Manifest& manifest);
+
+}  // namespace snell

@@ -1,0 +1,24 @@
+#include "core/status.h"
+
+namespace snell {
+
+const char* statusName(Status status) {
+  switch (status) {
+    case Status::Pass: return "Pass";
+    case Status::NotSupported: return "NotSupported";
+    case Status::CompatibilityWarning: return "CompatibilityWarning";
+    case Status::QualityWarning: return "QualityWarning";
+    case Status::ExpectedCompileError: return "ExpectedCompileError";
+    case Status::Fail: return "Fail";
+    case Status::CompileError: return "CompileError";
+    case Status::Timeout: return "Timeout";
+    case Status::Crash: return "Crash";
+  }
+  return "?";
+}
+
+Status worstOf(Status a, Status b) { return static_cast<int>(a) >= static_cast<int>(b) ? a : b; }
+
+bool isFailure(Status status) { return static_cast<int>(status) >= static_cast<int>(Status::Fail); }
+
+}  // namespace snell

@@ -1,0 +1,50 @@
+#include "report/atomic_file.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "core/errors.h"
+
+namespace snell {
+
+namespace fs = std::filesystem;
+
+StreamingFile::StreamingFile(fs::path path) : path_(std::move(path)) {
+  partial_ = path_;
+  partial_ += ".partial";
+  out_.open(partial_, std::ios::binary | std::ios::trunc);
+  if (!out_)
+    throw UsageError(fmt::format("{}: cannot write here; check the folder exists and is writable",
+                                 partial_.string()));
+}
+
+StreamingFile::~StreamingFile() = default;  // an uncommitted .partial stays for inspection
+
+void StreamingFile::writeLine(const std::string& line) {
+  out_ << line << '\n';
+  out_.flush();
+}
+
+void StreamingFile::commit() {
+  if (committed_) return;
+  out_.close();
+  fs::rename(partial_, path_);
+  committed_ = true;
+}
+
+void writeFileAtomically(const fs::path& path, const std::string& text) {
+  fs::path temporary = path;
+  temporary += fmt::format(".tmp{}", getpid());
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw UsageError(fmt::format("{}: cannot write here; check the folder exists and is writable",
+                                   path.string()));
+    out << text;
+    out.flush();
+    if (!out) throw UsageError(fmt::format("{}: write failed (disk full?)", temporary.string()));
+  }
+  fs::rename(temporary, path);
+}
+
+}  // namespace snell

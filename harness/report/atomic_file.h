@@ -1,0 +1,31 @@
+#pragma once
+// Result files are never left half-written under their final name: they are
+// written beside it and renamed into place.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace snell {
+
+// Streams to "<path>.partial" (flushed after every record, so a crash keeps
+// what was finished) and renames it to `path` on commit().
+class StreamingFile {
+ public:
+  explicit StreamingFile(std::filesystem::path path);
+  ~StreamingFile();
+  StreamingFile(const StreamingFile&) = delete;
+  StreamingFile& operator=(const StreamingFile&) = delete;
+
+  void writeLine(const std::string& line);
+  void commit();
+
+ private:
+  std::filesystem::path path_, partial_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// Writes the whole text to a temporary file and renames it over `path`.
+void writeFileAtomically(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace snell

@@ -1,0 +1,33 @@
+#include "report/summary_table.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace snell {
+namespace {
+
+std::string slackText(double s) { return std::isfinite(s) ? fmt::format("{:.3f}", s) : "inf"; }
+
+}  // namespace
+
+void printSummaryTable(std::ostream& out, const std::vector<CaseResult>& results) {
+  std::size_t idWidth = 4;
+  for (const CaseResult& r : results) idWidth = std::max(idWidth, r.caseId.size());
+  fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>9}  {:>8}\n", "case", idWidth,
+             "backend", "status", "vectors", "undefined", "worst", "time");
+  for (const CaseResult& r : results)
+    fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>9}  {:>7.3f}s\n", r.caseId, idWidth,
+               r.backend, statusName(r.status), r.vertices, r.componentsUndefined(),
+               slackText(r.worstSlack()), r.seconds);
+  std::map<std::string, int> counts;
+  for (const CaseResult& r : results) ++counts[statusName(r.status)];
+  std::string tally;
+  for (const auto& [name, n] : counts) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, name);
+  fmt::print(out, "{} results: {}\n", results.size(), tally.empty() ? "none" : tally);
+}
+
+}  // namespace snell

@@ -1,0 +1,168 @@
+#include "runner/builtin_eval.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/slack.h"
+#include "core/errors.h"
+#include "oracle/builtin_probe.h"
+#include "runner/probe_shader.h"
+
+namespace snell {
+namespace {
+
+using nlohmann::json;
+
+constexpr std::size_t kBatchLines = 8192;
+
+struct Line {
+  std::size_t number = 0;
+  std::optional<BuiltinCall> call;  // empty when malformed
+  std::string error;
+  std::optional<BuiltinResult> oracle;
+  std::vector<float> driver;
+};
+
+std::vector<float> floatVector(const json& object, const char* key) {
+  if (!object.contains(key)) throw UsageError(fmt::format("missing \"{}\"", key));
+  const json& value = object.at(key);
+  if (!value.is_array() || value.empty() || value.size() > 4)
+    throw UsageError(fmt::format("\"{}\" must be an array of 1 to 4 numbers", key));
+  std::vector<float> out;
+  for (const json& x : value) {
+    if (!x.is_number()) throw UsageError(fmt::format("\"{}\" must hold numbers only", key));
+    out.push_back(static_cast<float>(x.get<double>()));
+  }
+  return out;
+}
+
+BuiltinCall parseCall(const std::string& text) {
+  const json object = json::parse(text);  // throws json::parse_error
+  if (!object.is_object()) throw UsageError("expected a JSON object");
+  if (!object.contains("fn") || !object.at("fn").is_string())
+    throw UsageError("missing \"fn\": use \"reflect\" or \"refract\"");
+  BuiltinCall call;
+  call.fn = object.at("fn").get<std::string>();
+  if (call.fn != "reflect" && call.fn != "refract")
+    throw UsageError(fmt::format("unknown fn \"{}\": use \"reflect\" or \"refract\"", call.fn));
+  call.I = floatVector(object, "I");
+  call.N = floatVector(object, "N");
+  if (call.I.size() != call.N.size())
+    throw UsageError(fmt::format("I has {} components and N has {}: they must match",
+                                 call.I.size(), call.N.size()));
+  if (call.fn == "refract") {
+    if (!object.contains("eta") || !object.at("eta").is_number())
+      throw UsageError("refract needs a number \"eta\"");
+    call.eta = static_cast<float>(object.at("eta").get<double>());
+  }
+  return call;
+}
+
+json finite(const std::vector<double>& values) {
+  json out = json::array();
+  for (double x : values) out.push_back(std::isfinite(x) ? json(x) : json(x > 0 ? "inf" : x < 0 ? "-inf" : "nan"));
+  return out;
+}
+
+// One draw for all lines of the batch that share a function and a width.
+void runOnDriver(std::vector<Line>& lines, Backend& backend) {
+  std::map<std::pair<std::string, int>, std::vector<Line*>> groups;
+  for (Line& line : lines)
+    if (line.call) groups[{line.call->fn, static_cast<int>(line.call->I.size())}].push_back(&line);
+  for (auto& [key, members] : groups) {
+    const auto& [fn, width] = key;
+    CaptureJob job;
+    job.program = builtinProbeProgram(fn, width);
+    job.varyings = {"R"};
+    job.vertexCount = members.size();
+    AttributeStream I{"I", width, {}}, N{"N", width, {}}, eta{"eta", 1, {}};
+    for (const Line* line : members) {
+      I.data.insert(I.data.end(), line->call->I.begin(), line->call->I.end());
+      N.data.insert(N.data.end(), line->call->N.begin(), line->call->N.end());
+      eta.data.push_back(line->call->eta);
+    }
+    job.attributes = {{"I", I}, {"N", N}};
+    if (fn == "refract") job.attributes["eta"] = eta;
+    const CaptureOutcome outcome = backend.captureVertexOutputs(job);
+    if (!outcome.compile.ok)
+      throw SetupError(fmt::format("the {} probe shader did not compile on {}: {}", fn,
+                                   backend.name(), outcome.compile.log));
+    const std::vector<float>& values = outcome.varyings.at(0).data;
+    for (std::size_t k = 0; k < members.size(); ++k)
+      members[k]->driver.assign(values.begin() + k * width, values.begin() + (k + 1) * width);
+  }
+}
+
+json answer(const Line& line, bool onDriver, EvalSummary& summary) {
+  if (!line.call) {
+    ++summary.malformed;
+    return {{"line", line.number}, {"error", line.error}};
+  }
+  ++summary.answered;
+  const BuiltinResult& oracle = *line.oracle;
+  json out = {{"line", line.number}, {"fn", line.call->fn}};
+  if (!onDriver) {
+    out["value"] = finite(oracle.value);
+  } else {
+    std::vector<double> driver(line.driver.begin(), line.driver.end());
+    bool within = true;
+    double worst = 0;
+    for (std::size_t c = 0; c < driver.size(); ++c) {
+      within = within && withinSpec(driver[c], oracle.lo[c], oracle.hi[c]);
+      worst = std::max(worst, slack(driver[c], oracle.value[c], oracle.lo[c], oracle.hi[c]));
+    }
+    if (!within) ++summary.outsideSpec;
+    out["value"] = finite(driver);
+    out["exact"] = finite(oracle.value);
+    out["within_spec"] = within;
+    out["slack"] = std::isfinite(worst) ? json(worst) : json("inf");
+  }
+  out["lo"] = finite(oracle.lo);
+  out["hi"] = finite(oracle.hi);
+  return out;
+}
+
+void flushBatch(std::vector<Line>& lines, std::ostream& out, Backend* backend,
+                EvalSummary& summary) {
+  for (Line& line : lines)
+    if (line.call) line.oracle = evaluateBuiltin(*line.call);
+  if (backend) runOnDriver(lines, *backend);
+  for (const Line& line : lines) out << answer(line, backend != nullptr, summary).dump() << '\n';
+  out.flush();
+  lines.clear();
+}
+
+}  // namespace
+
+EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend) {
+  EvalSummary summary;
+  std::vector<Line> batch;
+  std::string text;
+  std::size_t number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
+    Line line;
+    line.number = number;
+    try {
+      line.call = parseCall(text);
+    } catch (const json::exception& error) {
+      line.error = fmt::format("line {}: not valid JSON ({})", number, error.what());
+    } catch (const UsageError& error) {
+      line.error = fmt::format("line {}: {}", number, error.what());
+    }
+    batch.push_back(std::move(line));
+    if (batch.size() == kBatchLines) flushBatch(batch, out, backend, summary);
+  }
+  flushBatch(batch, out, backend, summary);
+  return summary;
+}
+
+}  // namespace snell

@@ -1,0 +1,33 @@
+#pragma once
+// Everything one case on one backend produced: what the reports print.
+#include <string>
+#include <vector>
+
+#include "backends/backend.h"
+#include "compare/vector_check.h"
+#include "core/status.h"
+
+namespace snell {
+
+struct CaseResult {
+  std::string caseId;
+  std::string backend;  // "gl" / "vk"
+  Status status = Status::Pass;
+  std::string message;  // why, when not Pass: first failures, compile log, error
+  std::string title;
+  std::string sourceFile, sourceWhere;
+  DriverInfo driver;
+  std::size_t vertices = 0;
+  std::vector<VaryingCheck> varyings;
+  std::string compileLog;
+  double seconds = 0;         // the whole case
+  double backendSeconds = 0;  // compile + draw + read back
+  double oracleSeconds = 0;   // 0 when the oracle result came from the cache
+
+  std::size_t componentsChecked() const;
+  std::size_t componentsUndefined() const;
+  std::size_t componentsFailed() const;
+  double worstSlack() const;
+};
+
+}  // namespace snell

@@ -1,0 +1,105 @@
+#include "runner/case_runner.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string describeFailures(const std::vector<VaryingCheck>& checks) {
+  std::string text;
+  for (const VaryingCheck& v : checks) {
+    if (!v.failed) continue;
+    text += fmt::format("{}: {} of {} components outside the spec interval", v.name, v.failed,
+                        v.checked);
+    for (const ComponentFailure& f : v.firstFailures)
+      text += fmt::format("\n  vertex {} [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]",
+                          f.vertex, f.component, f.observed, f.reference, f.lo, f.hi);
+    text += "\n";
+  }
+  return text;
+}
+
+}  // namespace
+
+const Scene& SceneCache::get(const std::string& name) {
+  auto it = scenes_.find(name);
+  if (it == scenes_.end()) it = scenes_.emplace(name, makeScene(name)).first;
+  return it->second;
+}
+
+const std::vector<OracleVarying>& OracleCache::get(const Case& c, const ResolvedBindings& bindings,
+                                                   double* secondsSpent) {
+  *secondsSpent = 0;
+  if (auto it = results_.find(c.id); it != results_.end()) return it->second;
+  const auto start = std::chrono::steady_clock::now();
+  const Manifest& m = *c.manifest;
+  const std::unique_ptr<VertexOracle> oracle = makeVertexOracle(m.oracle);
+  const std::vector<std::string> outputs = oracle->outputs();
+  for (const std::string& name : m.captureVertex)
+    if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
+      throw UsageError(fmt::format("{}: capture.vertex names `{}`, which oracle `{}` does not "
+                                   "compute; it computes {}",
+                                   m.path.string(), name, m.oracle, fmt::join(outputs, ", ")));
+  std::vector<OracleVarying> all =
+      oracle->evaluate({bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount});
+  std::vector<OracleVarying> captured;
+  for (const std::string& name : m.captureVertex)
+    for (OracleVarying& v : all)
+      if (v.name == name) captured.push_back(std::move(v));
+  *secondsSpent = secondsSince(start);
+  return results_.emplace(c.id, std::move(captured)).first->second;
+}
+
+CaseResult CaseRunner::run(const Case& c) {
+  const auto start = std::chrono::steady_clock::now();
+  const Manifest& m = *c.manifest;
+  CaseResult result;
+  result.caseId = c.id;
+  result.backend = backend_.name();
+  result.title = m.title;
+  result.sourceFile = m.source.file;
+  result.sourceWhere = m.source.where;
+  result.driver = driver_;
+
+  const ResolvedBindings bindings = resolveBindings(m, scenes_.get(c.spec.scene));
+  result.vertices = bindings.vertexCount;
+  const std::vector<OracleVarying>& expected = oracles_.get(c, bindings, &result.oracleSeconds);
+
+  CaptureJob job{loadProgram(m), bindings.uniforms, bindings.attributes, m.captureVertex,
+                 bindings.vertexCount};
+  const auto backendStart = std::chrono::steady_clock::now();
+  CaptureOutcome outcome;
+  try {
+    outcome = backend_.captureVertexOutputs(job);
+  } catch (const SetupError& error) {
+    result.status = Status::Fail;
+    result.message = fmt::format("backend error: {}", error.what());
+    result.seconds = secondsSince(start);
+    return result;
+  }
+  result.backendSeconds = secondsSince(backendStart);
+  result.compileLog = outcome.compile.log;
+  if (!outcome.compile.ok) {
+    result.status = Status::CompileError;
+    result.message = outcome.compile.log;
+  } else {
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
+    result.status = result.componentsFailed() ? Status::Fail : Status::Pass;
+    result.message = describeFailures(result.varyings);
+  }
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+}  // namespace snell

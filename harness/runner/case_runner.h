@@ -1,0 +1,51 @@
+#pragma once
+// Runs one case on one backend: bind the scene's values, capture the
+// listing's outputs, hold them against the oracle. The oracle's answer does
+// not depend on the backend, so it is computed once per case and shared.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "backends/backend.h"
+#include "core/case.h"
+#include "oracle/vertex_oracle.h"
+#include "runner/case_result.h"
+
+namespace snell {
+
+class OracleCache {
+ public:
+  // Evaluates on first use. Throws UsageError when the manifest captures an
+  // output the oracle does not compute.
+  const std::vector<OracleVarying>& get(const Case& c, const ResolvedBindings& bindings,
+                                        double* secondsSpent);
+
+ private:
+  std::map<std::string, std::vector<OracleVarying>> results_;
+};
+
+class SceneCache {
+ public:
+  const Scene& get(const std::string& name);
+
+ private:
+  std::map<std::string, Scene> scenes_;
+};
+
+class CaseRunner {
+ public:
+  CaseRunner(Backend& backend, OracleCache& oracles, SceneCache& scenes)
+      : backend_(backend), oracles_(oracles), scenes_(scenes), driver_(backend.driverInfo()) {}
+
+  // Never throws for what a driver does; UsageError for a broken manifest.
+  CaseResult run(const Case& c);
+
+ private:
+  Backend& backend_;
+  OracleCache& oracles_;
+  SceneCache& scenes_;
+  DriverInfo driver_;
+};
+
+}  // namespace snell

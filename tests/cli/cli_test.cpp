@@ -1,0 +1,127 @@
+// The `snell` command as a user runs it.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code = -1;
+  std::string out;  // stdout and stderr together
+};
+
+Outcome snell(const std::string& args, const std::string& input = "") {
+  const fs::path in = fs::temp_directory_path() / fmt::format("snell-cli-in-{}", ::getpid());
+  std::ofstream(in) << input;
+  const std::string command =
+      fmt::format("{} {} < {} 2>&1", SNELL_BINARY, args, in.string());
+  FILE* pipe = popen(command.c_str(), "r");
+  Outcome outcome;
+  std::array<char, 4096> buffer;
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) outcome.out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  fs::remove(in);
+  return outcome;
+}
+
+std::vector<nlohmann::json> jsonLines(const std::string& text) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty() && line[0] == '{') lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+TEST(Cli, UnknownFlagIsExit2) { EXPECT_EQ(snell("run --no-such-flag").code, 2); }
+TEST(Cli, NoSubcommandIsExit2) { EXPECT_EQ(snell("").code, 2); }
+TEST(Cli, BadBackendIsExit2) { EXPECT_EQ(snell("run --backend d3d").code, 2); }
+TEST(Cli, MissingShadersFolderIsExit2) { EXPECT_EQ(snell("run --shaders /nonexistent").code, 2); }
+
+TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
+  const Outcome o = snell("run --filter 'no-such/*'");
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.out.find("snell list"), std::string::npos) << o.out;
+}
+
+TEST(Cli, ListShowsTheFresnelCases) {
+  const Outcome o = snell("list");
+  EXPECT_EQ(o.code, 0);
+  EXPECT_NE(o.out.find("orange-book/14.1-fresnel/sphere"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("orange-book/14.1-fresnel/sweep"), std::string::npos) << o.out;
+}
+
+TEST(Cli, BrokenManifestIsExit2NamingTheFile) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-bad-{}", ::getpid());
+  fs::create_directories(dir / "x");
+  std::ofstream(dir / "x" / "manifest.toml") << "id = \"x\"\ntitle = 5\n";
+  const Outcome o = snell(fmt::format("run --shaders {}", dir.string()));
+  EXPECT_EQ(o.code, 2);
+  EXPECT_NE(o.out.find("manifest.toml:2:"), std::string::npos) << o.out;
+  fs::remove_all(dir);
+}
+
+TEST(Cli, EvalOracleAnswersEveryLineInOrder) {
+  const Outcome o = snell("eval --backend oracle",
+                          "{\"fn\":\"refract\",\"I\":[0,-1,0],\"N\":[0,1,0],\"eta\":0.66}\n"
+                          "{\"fn\":\"reflect\",\"I\":[0.6,-0.8],\"N\":[0,1]}\n");
+  EXPECT_EQ(o.code, 0) << o.out;
+  const auto lines = jsonLines(o.out);
+  ASSERT_EQ(lines.size(), 2u) << o.out;
+  // Normal incidence: refract keeps the direction; reflect mirrors the normal component.
+  EXPECT_EQ(lines[0]["value"][1].get<double>(), -1.0);
+  EXPECT_NEAR(lines[1]["value"][0].get<double>(), 0.6, 1e-7);
+  EXPECT_NEAR(lines[1]["value"][1].get<double>(), 0.8, 1e-7);
+  EXPECT_LE(lines[1]["lo"][1].get<double>(), lines[1]["value"][1].get<double>());
+  EXPECT_GE(lines[1]["hi"][1].get<double>(), lines[1]["value"][1].get<double>());
+}
+
+TEST(Cli, EvalMalformedLineNamesItsNumberAndOthersAreAnswered) {
+  const Outcome o = snell("eval",
+                          "{\"fn\":\"reflect\",\"I\":[1,0],\"N\":[0,1]}\n"
+                          "not json\n"
+                          "{\"fn\":\"reflect\",\"I\":[1,0,0],\"N\":[0,1]}\n"
+                          "{\"fn\":\"reflect\",\"I\":[1,0],\"N\":[0,1]}\n");
+  EXPECT_EQ(o.code, 2);
+  const auto lines = jsonLines(o.out);
+  ASSERT_EQ(lines.size(), 4u) << o.out;
+  EXPECT_TRUE(lines[0].contains("value"));
+  EXPECT_NE(lines[1]["error"].get<std::string>().find("line 2"), std::string::npos);
+  EXPECT_NE(lines[2]["error"].get<std::string>().find("line 3"), std::string::npos);
+  EXPECT_TRUE(lines[3].contains("value"));
+}
+
+class EvalOnDriver : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EvalOnDriver, DriverResultsAreWithinSpec) {
+  std::string input;
+  for (int k = 0; k < 200; ++k) {
+    const double a = k * 0.0078;  // incidence from 0 to about 89.4 degrees
+    input += fmt::format("{{\"fn\":\"refract\",\"I\":[{},{},0],\"N\":[0,1,0],\"eta\":{}}}\n",
+                         std::sin(a), -std::cos(a), k % 2 ? 0.66 : 1.5);
+    input += fmt::format("{{\"fn\":\"reflect\",\"I\":[{},{}],\"N\":[0,1]}}\n", std::sin(a),
+                         -std::cos(a));
+  }
+  const Outcome o = snell("eval --backend " + GetParam(), input);
+  EXPECT_EQ(o.code, 0) << o.out.substr(0, 2000);
+  const auto lines = jsonLines(o.out);
+  ASSERT_EQ(lines.size(), 400u);
+  for (const auto& line : lines) {
+    ASSERT_TRUE(line.contains("within_spec")) << line.dump();
+    EXPECT_TRUE(line["within_spec"].get<bool>()) << line.dump();
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, EvalOnDriver, ::testing::Values("gl", "vk"));
+
+}  // namespace

@@ -1,0 +1,67 @@
+// Every case of the repository's listings, on both backends, as a test.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "backends/backend.h"
+#include "core/case.h"
+#include "runner/case_runner.h"
+
+namespace snell {
+namespace {
+
+struct Conformance {
+  std::vector<Manifest> manifests = loadManifests(SNELL_SOURCE_ROOT "/shaders");
+  std::vector<Case> cases = expandCases(manifests, "");
+  OracleCache oracles;
+  SceneCache scenes;
+  std::map<std::string, std::unique_ptr<Backend>> backends;
+
+  Backend& backend(const std::string& name) {
+    auto& slot = backends[name];
+    if (!slot) slot = makeBackend(name, BackendOptions{.validation = true});
+    return *slot;
+  }
+  static Conformance& get() {
+    static Conformance instance;
+    return instance;
+  }
+};
+
+struct Param {
+  std::string backend;
+  std::size_t index;
+};
+
+class ConformanceCase : public ::testing::TestWithParam<Param> {};
+
+TEST_P(ConformanceCase, PassesAgainstTheOracle) {
+  Conformance& all = Conformance::get();
+  const Case& c = all.cases.at(GetParam().index);
+  CaseRunner runner(all.backend(GetParam().backend), all.oracles, all.scenes);
+  const CaseResult result = runner.run(c);
+  EXPECT_EQ(result.status, Status::Pass) << result.message;
+  EXPECT_GT(result.componentsChecked(), 1000u);  // thousands of values, not a handful
+  RecordProperty("worst_slack", std::to_string(result.worstSlack()));
+  RecordProperty("components_checked", std::to_string(result.componentsChecked()));
+}
+
+std::vector<Param> allParams() {
+  std::vector<Param> params;
+  const std::size_t n = Conformance::get().cases.size();
+  for (const char* backend : {"gl", "vk"})
+    for (std::size_t k = 0; k < n; ++k) params.push_back({backend, k});
+  return params;
+}
+
+std::string paramName(const ::testing::TestParamInfo<Param>& info) {
+  std::string id = info.param.backend + "_" + Conformance::get().cases.at(info.param.index).id;
+  for (char& ch : id)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return id;
+}
+
+INSTANTIATE_TEST_SUITE_P(Listings, ConformanceCase, ::testing::ValuesIn(allParams()), paramName);
+
+}  // namespace
+}  // namespace snell

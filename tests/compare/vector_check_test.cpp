@@ -1,0 +1,79 @@
+#include "compare/vector_check.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "compare/slack.h"
+
+namespace snell {
+namespace {
+
+OracleVarying expected3() {
+  OracleVarying v;
+  v.name = "R";
+  v.components = 3;
+  v.reference = {0.5, -0.25, 1.0};
+  v.lo = {0.4999, -0.2501, 0.9999};
+  v.hi = {0.5002, -0.2499, 1.0};
+  v.strict = {0.5f, -0.25f, 1.0f};
+  v.undefined = {0, 0, 0};
+  return v;
+}
+
+TEST(Slack, ZeroAtExactValueAndOneAtTheEdge) {
+  EXPECT_EQ(slack(0.5, 0.5, 0.4, 0.7), 0.0);
+  EXPECT_DOUBLE_EQ(slack(0.7, 0.5, 0.4, 0.7), 1.0);
+  EXPECT_DOUBLE_EQ(slack(0.4, 0.5, 0.4, 0.7), 1.0);
+  EXPECT_DOUBLE_EQ(slack(0.6, 0.5, 0.4, 0.7), 0.5);  // measured on its own side
+  EXPECT_GT(slack(0.71, 0.5, 0.4, 0.7), 1.0);
+}
+
+TEST(Slack, NoRoomOrNanIsInfinite) {
+  EXPECT_TRUE(std::isinf(slack(1.0000001, 1.0, 0.9, 1.0)));
+  EXPECT_TRUE(std::isinf(slack(std::nan(""), 1.0, 0.9, 1.1)));
+  EXPECT_FALSE(withinSpec(std::nan(""), 0.9, 1.1));
+}
+
+TEST(VectorCheck, PassesInsideTheInterval) {
+  CapturedVarying got{"R", 3, {0.5f, -0.25f, 1.0f}};
+  const VaryingCheck check = checkVarying(expected3(), got);
+  EXPECT_EQ(check.checked, 3u);
+  EXPECT_EQ(check.failed, 0u);
+  EXPECT_EQ(check.worstSlack, 0.0);
+}
+
+TEST(VectorCheck, FailsJustOutsideTheInterval) {
+  const OracleVarying e = expected3();
+  // One fp32 step beyond hi on the last component.
+  CapturedVarying got{"R", 3, {0.5f, -0.25f, std::nextafter(1.0f, 2.0f)}};
+  const VaryingCheck check = checkVarying(e, got);
+  EXPECT_EQ(check.failed, 1u);
+  ASSERT_EQ(check.firstFailures.size(), 1u);
+  EXPECT_EQ(check.firstFailures[0].component, 2);
+  EXPECT_GT(check.worstSlack, 1.0);
+}
+
+TEST(VectorCheck, FailsOnNan) {
+  CapturedVarying got{"R", 3, {0.5f, std::numeric_limits<float>::quiet_NaN(), 1.0f}};
+  EXPECT_EQ(checkVarying(expected3(), got).failed, 1u);
+}
+
+TEST(VectorCheck, UndefinedComponentsAreCountedNotGated) {
+  OracleVarying e = expected3();
+  e.undefined = {0, 1, 0};
+  CapturedVarying got{"R", 3, {0.5f, 1e9f, 1.0f}};
+  const VaryingCheck check = checkVarying(e, got);
+  EXPECT_EQ(check.failed, 0u);
+  EXPECT_EQ(check.undefined, 1u);
+  EXPECT_EQ(check.checked, 2u);
+}
+
+TEST(VectorCheck, MismatchedShapesAreAHarnessError) {
+  CapturedVarying got{"R", 3, {0.5f, -0.25f}};
+  EXPECT_THROW(checkVarying(expected3(), got), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace snell

@@ -1,0 +1,159 @@
+#include "core/manifest.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/case.h"
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ManifestTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("snell-manifest-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "a.vert") << "#version 140\nvoid main() {}\n";
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& text) {
+    const fs::path path = dir_ / "manifest.toml";
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  // Loads and returns the error message, failing the test if none is thrown.
+  std::string errorOf(const std::string& text) {
+    try {
+      loadManifest(write(text));
+    } catch (const UsageError& error) {
+      return error.what();
+    }
+    ADD_FAILURE() << "no error for:\n" << text;
+    return {};
+  }
+
+  static constexpr const char* kValid = R"(id = "x/y"
+title = "t"
+source = { file = "f.txt", where = "Listing 1" }
+stages = { vertex = "a.vert" }
+oracle = "orange_book_fresnel"
+constants = { Eta = 0.66 }
+[inputs]
+MCvertex = "scene.position"
+[uniforms]
+M = "scene.modelview"
+S = 2.5
+V = [1, 2, 3]
+Q = { type = "mat3", value = [1, 0, 0, 0, 1, 0, 0, 0, 1] }
+[capture]
+vertex = ["Reflect"]
+[[case]]
+scene = "sphere"
+)";
+
+  fs::path dir_;
+};
+
+TEST_F(ManifestTest, ReadsEveryField) {
+  const Manifest m = loadManifest(write(kValid));
+  EXPECT_EQ(m.id, "x/y");
+  EXPECT_EQ(m.source.where, "Listing 1");
+  EXPECT_EQ(m.constants.at("Eta"), 0.66);
+  ASSERT_EQ(m.uniforms.size(), 4u);
+  ASSERT_EQ(m.inputs.size(), 1u);
+  EXPECT_EQ(std::get<std::string>(m.inputs[0].source), "position");
+  const auto find = [&](const std::string& name) {
+    for (const Binding& b : m.uniforms)
+      if (b.name == name) return b;
+    ADD_FAILURE() << name;
+    return Binding{};
+  };
+  EXPECT_EQ(std::get<Value>(find("S").source).type, ValueType::Float);
+  EXPECT_EQ(std::get<Value>(find("V").source).type, ValueType::Vec3);
+  EXPECT_EQ(std::get<Value>(find("Q").source).type, ValueType::Mat3);
+  ASSERT_EQ(m.cases.size(), 1u);
+  EXPECT_EQ(m.cases[0].checks, std::vector<std::string>{"vectors"});
+  EXPECT_EQ(loadProgram(m).vertex, "#version 140\nvoid main() {}\n");
+}
+
+TEST_F(ManifestTest, MissingFieldNamesFileAndField) {
+  std::string text = kValid;
+  text.erase(text.find("oracle ="), text.find('\n', text.find("oracle =")) + 1 - text.find("oracle ="));
+  const std::string message = errorOf(text);
+  EXPECT_NE(message.find("manifest.toml:1:"), std::string::npos) << message;
+  EXPECT_NE(message.find("`oracle`"), std::string::npos) << message;
+}
+
+TEST_F(ManifestTest, WrongTypeNamesTheLine) {
+  std::string text = kValid;
+  text.replace(text.find("title = \"t\""), 11, "title = 3");
+  const std::string message = errorOf(text);
+  EXPECT_NE(message.find("manifest.toml:2:"), std::string::npos) << message;
+}
+
+TEST_F(ManifestTest, WrongVectorLengthIsRejected) {
+  std::string text = kValid;
+  text.replace(text.find("[1, 0, 0, 0, 1, 0, 0, 0, 1]"), 27, "[1, 0, 0, 0, 1, 0, 0, 0]");
+  const std::string message = errorOf(text);
+  EXPECT_NE(message.find("manifest.toml:13:"), std::string::npos) << message;
+  EXPECT_NE(message.find("mat3 has 9"), std::string::npos) << message;
+}
+
+TEST_F(ManifestTest, BindingStringMustBeASemantic) {
+  std::string text = kValid;
+  text.replace(text.find("\"scene.modelview\""), 17, "\"modelview\"");
+  EXPECT_NE(errorOf(text).find("starts with \"scene.\""), std::string::npos);
+}
+
+TEST_F(ManifestTest, BrokenTomlGivesLine) {
+  EXPECT_NE(errorOf("id = \"x\"\ntitle = \n").find("manifest.toml:2:"), std::string::npos);
+}
+
+TEST_F(ManifestTest, MissingStageFileIsAUsageError) {
+  std::string text = kValid;
+  text.replace(text.find("a.vert"), 6, "gone.vert");
+  const Manifest m = loadManifest(write(text));
+  EXPECT_THROW(loadProgram(m), UsageError);
+}
+
+TEST_F(ManifestTest, UnknownSemanticNamesTheLineAndTheScene) {
+  std::string text = kValid;
+  text.replace(text.find("scene.modelview"), 15, "scene.nonsense");
+  const Manifest m = loadManifest(write(text));
+  try {
+    resolveBindings(m, makeScene("sphere"));
+    FAIL() << "no error";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("manifest.toml:10:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("scene.nonsense"), std::string::npos);
+  }
+}
+
+TEST_F(ManifestTest, FilterMatchesCaseIds) {
+  std::vector<Manifest> manifests{loadManifest(write(kValid))};
+  EXPECT_EQ(expandCases(manifests, "").size(), 1u);
+  EXPECT_EQ(expandCases(manifests, "x/*").size(), 1u);
+  EXPECT_EQ(expandCases(manifests, "x/y/sphere").size(), 1u);
+  EXPECT_EQ(expandCases(manifests, "z/*").size(), 0u);
+}
+
+TEST(RepositoryManifests, AllLoadAndResolve) {
+  const std::vector<Manifest> manifests = loadManifests(SNELL_SOURCE_ROOT "/shaders");
+  ASSERT_FALSE(manifests.empty());
+  for (const Case& c : expandCases(manifests, "")) {
+    EXPECT_NO_THROW(loadProgram(*c.manifest)) << c.id;
+    EXPECT_NO_THROW(resolveBindings(*c.manifest, makeScene(c.spec.scene))) << c.id;
+  }
+}
+
+}  // namespace
+}  // namespace snell
