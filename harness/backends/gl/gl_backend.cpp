@@ -1,0 +1,64 @@
+#include "backends/gl/gl_backend.h"
+
+#include <memory>
+
+#include "backends/gl/gl_context_state.h"
+#include "backends/gl/gl_driver_info.h"
+
+namespace snell {
+
+namespace {
+
+// Contexts are made once per backend and reused across calls: bringing up a
+// context costs far more than a capture. The compatibility context only
+// serves legacy listings, so it is made on first use.
+class GlBackend final : public Backend {
+ public:
+  GlBackend() : core_(Profile::Core) {
+    core_.makeCurrent();
+    info_ = queryGlDriverInfo();
+  }
+
+  std::string name() const override { return "gl"; }
+  DriverInfo driverInfo() const override { return info_; }
+
+  CompileOutcome compile(const ProgramSource& program) override {
+    stateFor(program.profile);
+    return buildGlProgram(program, {}).outcome;
+  }
+
+  CaptureOutcome captureVertexOutputs(const CaptureJob& job) override {
+    GlContextState& state = stateFor(job.program.profile);
+    GlCaptureProgram& program = state.programs().get(job.program, job.varyings);
+    CaptureOutcome outcome;
+    outcome.compile = program.compile;
+    if (!outcome.compile.ok) return outcome;
+    outcome.varyings = state.capture().run(program, job);
+    return outcome;
+  }
+
+ private:
+  GlContextState& stateFor(Profile profile) {
+    if (profile == Profile::Core) {
+      core_.makeCurrent();
+      return core_;
+    }
+    if (!compatibility_) compatibility_ = std::make_unique<GlContextState>(Profile::Compatibility);
+    compatibility_->makeCurrent();
+    return *compatibility_;
+  }
+
+  GlContextState core_;
+  std::unique_ptr<GlContextState> compatibility_;
+  DriverInfo info_;
+};
+
+}  // namespace
+
+// BackendOptions::validation is a Vulkan layer switch; GL has nothing to
+// turn on, since every GL call here is already checked with glGetError.
+std::unique_ptr<Backend> makeGlBackend(const BackendOptions& /*options*/) {
+  return std::make_unique<GlBackend>();
+}
+
+}  // namespace snell

@@ -1,0 +1,22 @@
+#include "backends/gl/gl_context_state.h"
+
+namespace snell {
+
+GlContextState::GlContextState(Profile profile) : context_(OsmesaContext::create(profile)) {
+  context_.makeCurrent();
+  programs_ = std::make_unique<GlProgramCache>();
+  capture_ = std::make_unique<GlVertexCapture>();
+}
+
+GlContextState::~GlContextState() {
+  // Another backend may have made its own context current since.
+  try {
+    context_.makeCurrent();
+  } catch (...) {
+    return;  // objects die with the context anyway
+  }
+  capture_.reset();
+  programs_.reset();
+}
+
+}  // namespace snell

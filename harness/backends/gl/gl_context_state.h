@@ -1,0 +1,31 @@
+#pragma once
+#include <memory>
+
+#include "backends/backend.h"
+#include "backends/gl/gl_program_cache.h"
+#include "backends/gl/gl_vertex_capture.h"
+#include "backends/gl/osmesa_context.h"
+
+namespace snell {
+
+// A context and the GL objects that belong to it. Member order matters: the
+// context is declared first so it is destroyed last, after the destructor
+// has made it current for the objects' deletion.
+class GlContextState {
+ public:
+  explicit GlContextState(Profile profile);
+  GlContextState(const GlContextState&) = delete;
+  GlContextState& operator=(const GlContextState&) = delete;
+  ~GlContextState();
+
+  void makeCurrent() { context_.makeCurrent(); }
+  GlProgramCache& programs() { return *programs_; }
+  GlVertexCapture& capture() { return *capture_; }
+
+ private:
+  OsmesaContext context_;
+  std::unique_ptr<GlProgramCache> programs_;
+  std::unique_ptr<GlVertexCapture> capture_;
+};
+
+}  // namespace snell
