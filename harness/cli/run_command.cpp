@@ -2,16 +2,18 @@
 
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include "backends/backend.h"
 #include "cli/commands.h"
 #include "core/case.h"
 #include "core/errors.h"
 #include "report/atomic_file.h"
-#include "report/json_results.h"
+#include "runner/case_result_json.h"
 #include "report/junit.h"
 #include "report/summary_table.h"
 #include "runner/case_runner.h"
+#include "runner/supervisor.h"
 
 namespace snell::cli {
 namespace {
@@ -24,6 +26,8 @@ struct RunOptions {
   std::string json;
   std::string junit;
   bool validation = false;
+  int jobs = 0;           // 0: one per core
+  double timeout = 0;     // 0: each manifest's own
 };
 
 // Everything a case needs is read before any driver is loaded, so a broken
@@ -61,29 +65,38 @@ int run(const RunOptions& options) {
   SceneCache scenes;
   validateCases(cases, scenes);
 
-  std::vector<std::string> backends =
+
+  const std::vector<std::string> backends =
       options.backend == "all" ? std::vector<std::string>{"gl", "vk"}
                                : std::vector<std::string>{options.backend};
+  std::vector<Task> tasks;
+  for (const std::string& backend : backends)
+    for (const Case& c : cases)
+      tasks.push_back({c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
+
   std::unique_ptr<StreamingFile> json;
   if (!options.json.empty()) json = std::make_unique<StreamingFile>(options.json);
-
-  OracleCache oracles;
-  std::vector<CaseResult> results;
-  const std::size_t total = cases.size() * backends.size();
-  for (const std::string& name : backends) {
-    BackendOptions backendOptions;
-    backendOptions.validation = options.validation;
-    std::unique_ptr<Backend> backend = makeBackend(name, backendOptions);
-    CaseRunner runner(*backend, oracles, scenes);
-    for (const Case& c : cases) {
-      CaseResult result = runner.run(c);
-      fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", results.size() + 1, total, name, c.id,
-                 statusName(result.status), result.seconds);
-      if (json) json->writeLine(toJson(result).dump());
-      results.push_back(std::move(result));
-    }
+  SupervisorOptions supervisor;
+  supervisor.executable = std::filesystem::read_symlink("/proc/self/exe").string();
+  supervisor.shaders = std::filesystem::absolute(options.shaders).string();
+  supervisor.validation = options.validation;
+  supervisor.jobs = options.jobs > 0 ? options.jobs
+                                     : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  std::size_t finished = 0;
+  const std::vector<CaseResult> results = superviseTasks(
+      tasks, supervisor, [&](std::size_t, const CaseResult& result) {
+        ++finished;
+        fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, tasks.size(), result.backend,
+                   result.caseId, statusName(result.status), result.seconds);
+        if (json) json->writeLine(toJson(result).dump());
+      });
+  // The streamed file is in completion order; the kept one is in task order,
+  // so it is the same whatever the number of workers.
+  if (json) {
+    std::string ordered;
+    for (const CaseResult& r : results) ordered += toJson(r).dump() + "\n";
+    json->finish(ordered);
   }
-  if (json) json->commit();
   if (!options.junit.empty()) writeFileAtomically(options.junit, toJUnitXml(results));
 
   printSummaryTable(std::cout, results);
@@ -109,6 +122,11 @@ Command addRunCommand(CLI::App& app) {
   sub->add_option("--golden", options->golden, "Folder of blessed goldens");
   sub->add_option("--json", options->json, "Write results as JSON Lines, one object per case");
   sub->add_option("--junit", options->junit, "Write results as JUnit XML");
+  sub->add_option("-j,--jobs", options->jobs, "Worker processes (default: one per core)")
+      ->check(CLI::Range(1, 256));
+  sub->add_option("--timeout", options->timeout,
+                  "Seconds a case may take before its worker is killed (default: the manifest's)")
+      ->check(CLI::PositiveNumber);
   sub->add_flag("--validation", options->validation,
                 "Vulkan: run under the Khronos validation layer; any message fails the case");
   return [options] { return run(*options); };

@@ -161,6 +161,11 @@ class ManifestReader {
         m.constants[std::string(name.str())] = *value.value<double>();
       }
     }
+    if (const toml::node* timeout = root.get("timeout")) {
+      if (!numeric(*timeout) || !(*timeout->value<double>() > 0))
+        fail(lineOf(*timeout), "`timeout` must be a positive number of seconds");
+      m.timeoutSeconds = *timeout->value<double>();
+    }
     m.inputs = bindings(root, "inputs");
     m.uniforms = bindings(root, "uniforms");
 

@@ -44,6 +44,7 @@ struct Manifest {
   std::vector<Binding> uniforms;
   std::vector<std::string> captureVertex;
   std::vector<CaseSpec> cases;
+  double timeoutSeconds = 60;  // per case; `snell run --timeout` overrides
 };
 
 // Parses one manifest. Every problem is a UsageError of the form

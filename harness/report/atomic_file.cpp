@@ -18,18 +18,17 @@ StreamingFile::StreamingFile(fs::path path) : path_(std::move(path)) {
                                  partial_.string()));
 }
 
-StreamingFile::~StreamingFile() = default;  // an uncommitted .partial stays for inspection
+StreamingFile::~StreamingFile() = default;  // an unfinished .partial stays for inspection
 
 void StreamingFile::writeLine(const std::string& line) {
   out_ << line << '\n';
   out_.flush();
 }
 
-void StreamingFile::commit() {
-  if (committed_) return;
+void StreamingFile::finish(const std::string& finalText) {
   out_.close();
-  fs::rename(partial_, path_);
-  committed_ = true;
+  writeFileAtomically(path_, finalText);
+  fs::remove(partial_);
 }
 
 void writeFileAtomically(const fs::path& path, const std::string& text) {

@@ -7,8 +7,9 @@
 
 namespace snell {
 
-// Streams to "<path>.partial" (flushed after every record, so a crash keeps
-// what was finished) and renames it to `path` on commit().
+// Streams records to "<path>.partial" as they come (flushed after each, so a
+// crash keeps what was finished); finish() puts the final text at `path`
+// atomically and removes the partial file.
 class StreamingFile {
  public:
   explicit StreamingFile(std::filesystem::path path);
@@ -17,12 +18,11 @@ class StreamingFile {
   StreamingFile& operator=(const StreamingFile&) = delete;
 
   void writeLine(const std::string& line);
-  void commit();
+  void finish(const std::string& finalText);
 
  private:
   std::filesystem::path path_, partial_;
   std::ofstream out_;
-  bool committed_ = false;
 };
 
 // Writes the whole text to a temporary file and renames it over `path`.

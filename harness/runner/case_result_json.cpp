@@ -1,12 +1,23 @@
-#include "report/json_results.h"
+#include "runner/case_result_json.h"
 
 #include <cmath>
+#include <limits>
 
 namespace snell {
 namespace {
 
 // JSON has no infinity: a slack past every bound is written as null.
 nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(); }
+
+double numberOr(const nlohmann::json& x, double infinite) {
+  return x.is_null() ? infinite : x.get<double>();
+}
+
+Status statusFromName(const std::string& name) {
+  for (int k = 0; k <= static_cast<int>(Status::Crash); ++k)
+    if (name == statusName(static_cast<Status>(k))) return static_cast<Status>(k);
+  throw nlohmann::json::other_error::create(501, "unknown status " + name, nullptr);
+}
 
 }  // namespace
 
@@ -48,6 +59,43 @@ nlohmann::json toJson(const CaseResult& r) {
           {"seconds", r.seconds},
           {"backend_seconds", r.backendSeconds},
           {"oracle_seconds", r.oracleSeconds}};
+}
+
+CaseResult caseResultFromJson(const nlohmann::json& j) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  CaseResult r;
+  r.caseId = j.at("case").get<std::string>();
+  r.backend = j.at("backend").get<std::string>();
+  r.status = statusFromName(j.at("status").get<std::string>());
+  r.message = j.at("message").get<std::string>();
+  r.title = j.at("title").get<std::string>();
+  r.sourceFile = j.at("source").at("file").get<std::string>();
+  r.sourceWhere = j.at("source").at("where").get<std::string>();
+  const nlohmann::json& d = j.at("driver");
+  r.driver = {d.at("api").get<std::string>(), d.at("api_version").get<std::string>(),
+              d.at("renderer").get<std::string>(), d.at("driver_version").get<std::string>(),
+              d.at("device_type").get<std::string>()};
+  r.vertices = j.at("vertices").get<std::size_t>();
+  for (const nlohmann::json& v : j.at("varyings")) {
+    VaryingCheck check;
+    check.name = v.at("name").get<std::string>();
+    check.checked = v.at("checked").get<std::size_t>();
+    check.undefined = v.at("undefined").get<std::size_t>();
+    check.failed = v.at("failed").get<std::size_t>();
+    check.worstSlack = numberOr(v.at("worst_slack"), kInf);
+    check.worstVertex = v.at("worst_vertex").get<std::size_t>();
+    for (const nlohmann::json& f : v.at("first_failures"))
+      check.firstFailures.push_back(
+          {f.at("vertex").get<std::size_t>(), f.at("component").get<int>(),
+           static_cast<float>(numberOr(f.at("observed"), std::nan(""))), f.at("reference").get<double>(),
+           f.at("lo").get<double>(), f.at("hi").get<double>(), numberOr(f.at("slack"), kInf)});
+    r.varyings.push_back(std::move(check));
+  }
+  r.compileLog = j.at("compile_log").get<std::string>();
+  r.seconds = j.at("seconds").get<double>();
+  r.backendSeconds = j.at("backend_seconds").get<double>();
+  r.oracleSeconds = j.at("oracle_seconds").get<double>();
+  return r;
 }
 
 }  // namespace snell

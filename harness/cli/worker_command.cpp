@@ -1,0 +1,19 @@
+#include "cli/commands.h"
+#include "runner/worker.h"
+
+namespace snell::cli {
+
+Command addWorkerCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "worker", "Internal: run cases named on standard input on one backend (started by `run`)");
+  sub->group("");  // not listed in --help: users run `snell run`
+  auto options = std::make_shared<WorkerOptions>();
+  sub->add_option("--backend", options->backend, "gl or vk")
+      ->required()
+      ->check(CLI::IsMember({"gl", "vk"}));
+  sub->add_option("--shaders", options->shaders, "Folder of listings")->required();
+  sub->add_flag("--validation", options->validation, "Vulkan validation layer");
+  return [options] { return runWorker(*options); };
+}
+
+}  // namespace snell::cli

@@ -1,0 +1,187 @@
+#include "runner/supervisor.h"
+
+#include <fmt/format.h>
+#include <poll.h>
+#include <signal.h>
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "runner/case_result_json.h"
+#include "runner/worker_process.h"
+
+namespace snell {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Slot {
+  std::unique_ptr<WorkerProcess> worker;
+  std::string backend;                  // the backend its worker has loaded
+  std::optional<std::size_t> task;      // the case it is running
+  Clock::time_point started, deadline;
+};
+
+CaseResult lostCase(const Task& task, Status status, const std::string& message, double seconds) {
+  CaseResult r;
+  r.caseId = task.caseId;
+  r.backend = task.backend;
+  r.status = status;
+  r.message = message;
+  r.seconds = seconds;
+  return r;
+}
+
+class Supervision {
+ public:
+  Supervision(const std::vector<Task>& tasks, const SupervisorOptions& options,
+              const ResultCallback& onResult)
+      : tasks_(tasks), options_(options), onResult_(onResult), results_(tasks.size()),
+        slots_(static_cast<std::size_t>(std::max(1, options.jobs))) {
+    for (std::size_t k = 0; k < tasks.size(); ++k) pending_.push_back(k);
+  }
+
+  std::vector<CaseResult> run() {
+    while (done_ < tasks_.size()) {
+      for (Slot& slot : slots_)
+        if (!slot.task && !pending_.empty()) assign(slot);
+      wait();
+    }
+    for (Slot& slot : slots_) slot.worker.reset();
+    return std::move(results_);
+  }
+
+ private:
+  // Prefers a case for the backend the slot's worker already loaded.
+  void assign(Slot& slot) {
+    auto it = std::find_if(pending_.begin(), pending_.end(), [&](std::size_t k) {
+      return slot.worker && tasks_[k].backend == slot.backend;
+    });
+    if (it == pending_.end()) it = pending_.begin();
+    const std::size_t index = *it;
+    pending_.erase(it);
+    const Task& task = tasks_[index];
+    if (slot.worker && slot.backend != task.backend) slot.worker.reset();
+    if (!slot.worker) {
+      std::vector<std::string> argv = {options_.executable, "worker", "--backend", task.backend,
+                                       "--shaders", options_.shaders};
+      if (options_.validation) argv.push_back("--validation");
+      slot.worker = std::make_unique<WorkerProcess>(argv);
+      slot.backend = task.backend;
+    }
+    slot.task = index;
+    slot.started = Clock::now();
+    slot.deadline = slot.started + std::chrono::duration_cast<Clock::duration>(
+                                       std::chrono::duration<double>(task.timeoutSeconds));
+    if (!slot.worker->send(task.caseId)) workerDied(slot);
+  }
+
+  void finishTask(Slot& slot, CaseResult result) {
+    const std::size_t index = *slot.task;
+    slot.task.reset();
+    results_[index] = std::move(result);
+    ++done_;
+    if (onResult_) onResult_(index, results_[index]);
+  }
+
+  double elapsed(const Slot& slot) const {
+    return std::chrono::duration<double>(Clock::now() - slot.started).count();
+  }
+
+  void workerDied(Slot& slot) {
+    const std::string how = slot.worker->finish(false);
+    const std::string tail = slot.worker->stderrTail(10);
+    slot.worker.reset();
+    if (!slot.task) return;
+    finishTask(slot, lostCase(tasks_[*slot.task], Status::Crash,
+                              fmt::format("worker {}{}{}", how, tail.empty() ? "" : "; stderr:\n",
+                                          tail),
+                              elapsed(slot)));
+  }
+
+  void timedOut(Slot& slot) {
+    const double seconds = elapsed(slot);
+    slot.worker->finish(true);
+    const std::string tail = slot.worker->stderrTail(10);
+    slot.worker.reset();
+    finishTask(slot, lostCase(tasks_[*slot.task], Status::Timeout,
+                              fmt::format("no result after {:.1f} s (limit {:.1f} s); worker "
+                                          "killed{}{}",
+                                          seconds, tasks_[*slot.task].timeoutSeconds,
+                                          tail.empty() ? "" : "; stderr:\n", tail),
+                              seconds));
+  }
+
+  void readResults(Slot& slot) {
+    for (const std::string& line : slot.worker->readLines()) {
+      if (!slot.task) continue;
+      CaseResult result;
+      try {
+        result = caseResultFromJson(nlohmann::json::parse(line));
+      } catch (const nlohmann::json::exception& error) {
+        result = lostCase(tasks_[*slot.task], Status::Crash,
+                          fmt::format("worker sent a malformed result ({}): {}", error.what(),
+                                      line.substr(0, 200)),
+                          elapsed(slot));
+      }
+      finishTask(slot, std::move(result));
+    }
+    if (slot.worker->stdoutClosed()) workerDied(slot);
+  }
+
+  void wait() {
+    std::vector<pollfd> fds;
+    std::vector<Slot*> owners;
+    Clock::time_point nearest = Clock::time_point::max();
+    for (Slot& slot : slots_) {
+      if (!slot.worker) continue;
+      if (slot.worker->stdoutFd() >= 0) {
+        fds.push_back({slot.worker->stdoutFd(), POLLIN, 0});
+        owners.push_back(&slot);
+      }
+      if (slot.worker->stderrFd() >= 0) {
+        fds.push_back({slot.worker->stderrFd(), POLLIN, 0});
+        owners.push_back(&slot);
+      }
+      if (slot.task) nearest = std::min(nearest, slot.deadline);
+    }
+    int timeoutMs = -1;
+    if (nearest != Clock::time_point::max())
+      timeoutMs = static_cast<int>(std::max<long>(
+          0, std::chrono::duration_cast<std::chrono::milliseconds>(nearest - Clock::now()).count() + 1));
+    if (!fds.empty()) poll(fds.data(), fds.size(), timeoutMs);
+    for (std::size_t k = 0; k < fds.size(); ++k) {
+      Slot& slot = *owners[k];
+      if (!slot.worker || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      if (fds[k].fd == slot.worker->stderrFd()) slot.worker->drainStderr();
+      else readResults(slot);
+    }
+    const Clock::time_point now = Clock::now();
+    for (Slot& slot : slots_)
+      if (slot.task && slot.worker && now >= slot.deadline) timedOut(slot);
+  }
+
+  const std::vector<Task>& tasks_;
+  const SupervisorOptions& options_;
+  const ResultCallback& onResult_;
+  std::vector<CaseResult> results_;
+  std::vector<Slot> slots_;
+  std::deque<std::size_t> pending_;
+  std::size_t done_ = 0;
+};
+
+}  // namespace
+
+std::vector<CaseResult> superviseTasks(const std::vector<Task>& tasks,
+                                       const SupervisorOptions& options,
+                                       const ResultCallback& onResult) {
+  // A worker that dies while we write to it must not kill the supervisor.
+  signal(SIGPIPE, SIG_IGN);
+  return Supervision(tasks, options, onResult).run();
+}
+
+}  // namespace snell

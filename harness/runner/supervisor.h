@@ -1,0 +1,37 @@
+#pragma once
+// The supervisor behind `snell run`: it touches no graphics API. It starts
+// worker processes (this binary, `snell worker`), hands them cases, and
+// reads each result as the case ends. A worker past its case's time limit
+// is killed (Timeout); a worker that dies gives its case Crash with the
+// signal and the last lines of its stderr. Either way a fresh worker takes
+// the remaining cases, and results land by task index, so the outcome does
+// not depend on the number of workers.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "runner/case_result.h"
+
+namespace snell {
+
+struct Task {
+  std::string caseId;
+  std::string backend;
+  double timeoutSeconds = 60;
+};
+
+struct SupervisorOptions {
+  std::string executable;  // the snell binary to start workers from
+  std::string shaders;
+  bool validation = false;
+  int jobs = 1;
+};
+
+using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;
+
+// Returns one result per task, in task order; calls onResult as each ends.
+std::vector<CaseResult> superviseTasks(const std::vector<Task>& tasks,
+                                       const SupervisorOptions& options,
+                                       const ResultCallback& onResult);
+
+}  // namespace snell

@@ -1,0 +1,39 @@
+#include "runner/worker.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "backends/backend.h"
+#include "core/case.h"
+#include "core/errors.h"
+#include "runner/case_result_json.h"
+#include "runner/case_runner.h"
+
+namespace snell {
+
+int runWorker(const WorkerOptions& options) {
+  const std::vector<Manifest> manifests = loadManifests(options.shaders);
+  const std::vector<Case> cases = expandCases(manifests, "");
+  std::map<std::string, const Case*> byId;
+  for (const Case& c : cases) byId[c.id] = &c;
+
+  std::unique_ptr<Backend> backend;  // loaded on the first case, not before
+  OracleCache oracles;
+  SceneCache scenes;
+  std::unique_ptr<CaseRunner> runner;
+  for (std::string id; std::getline(std::cin, id);) {
+    auto it = byId.find(id);
+    if (it == byId.end()) throw UsageError(fmt::format("worker: no case `{}`", id));
+    if (!backend) {
+      backend = makeBackend(options.backend, BackendOptions{.validation = options.validation});
+      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes);
+    }
+    std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
+  }
+  return 0;
+}
+
+}  // namespace snell

@@ -1,0 +1,50 @@
+#include "runner/case_result_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace snell {
+namespace {
+
+TEST(CaseResultJson, RoundTripsEveryField) {
+  CaseResult r;
+  r.caseId = "a/b/sphere";
+  r.backend = "vk";
+  r.status = Status::Fail;
+  r.message = "R: 1 of 3";
+  r.title = "t";
+  r.sourceFile = "f.txt";
+  r.sourceWhere = "Listing 1";
+  r.driver = {"Vulkan", "1.3", "llvmpipe", "Mesa 22.3.6", "cpu"};
+  r.vertices = 7;
+  VaryingCheck v;
+  v.name = "R";
+  v.checked = 3;
+  v.undefined = 1;
+  v.failed = 1;
+  v.worstSlack = std::numeric_limits<double>::infinity();
+  v.worstVertex = 2;
+  v.firstFailures.push_back({2, 1, 0.5f, 0.25, 0.2, 0.3, std::numeric_limits<double>::infinity()});
+  r.varyings.push_back(v);
+  r.compileLog = "log";
+  r.seconds = 1.5;
+  r.backendSeconds = 1.0;
+  r.oracleSeconds = 0.25;
+  const CaseResult back = caseResultFromJson(nlohmann::json::parse(toJson(r).dump()));
+  EXPECT_EQ(toJson(back), toJson(r));
+  EXPECT_TRUE(std::isinf(back.varyings[0].worstSlack));
+  EXPECT_EQ(back.status, Status::Fail);
+}
+
+TEST(CaseResultJson, MalformedRecordThrows) {
+  EXPECT_THROW(caseResultFromJson(nlohmann::json::parse(R"({"case": "x"})")),
+               nlohmann::json::exception);
+  nlohmann::json j = toJson(CaseResult{});
+  j["status"] = "Sideways";
+  EXPECT_THROW(caseResultFromJson(j), nlohmann::json::exception);
+}
+
+}  // namespace
+}  // namespace snell
