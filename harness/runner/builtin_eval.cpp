@@ -13,6 +13,7 @@
 #include "compare/slack.h"
 #include "core/errors.h"
 #include "oracle/builtin_probe.h"
+#include "runner/eval_line.h"
 #include "runner/probe_shader.h"
 
 namespace snell {
@@ -29,41 +30,6 @@ struct Line {
   std::optional<BuiltinResult> oracle;
   std::vector<float> driver;
 };
-
-std::vector<float> floatVector(const json& object, const char* key) {
-  if (!object.contains(key)) throw UsageError(fmt::format("missing \"{}\"", key));
-  const json& value = object.at(key);
-  if (!value.is_array() || value.empty() || value.size() > 4)
-    throw UsageError(fmt::format("\"{}\" must be an array of 1 to 4 numbers", key));
-  std::vector<float> out;
-  for (const json& x : value) {
-    if (!x.is_number()) throw UsageError(fmt::format("\"{}\" must hold numbers only", key));
-    out.push_back(static_cast<float>(x.get<double>()));
-  }
-  return out;
-}
-
-BuiltinCall parseCall(const std::string& text) {
-  const json object = json::parse(text);  // throws json::parse_error
-  if (!object.is_object()) throw UsageError("expected a JSON object");
-  if (!object.contains("fn") || !object.at("fn").is_string())
-    throw UsageError("missing \"fn\": use \"reflect\" or \"refract\"");
-  BuiltinCall call;
-  call.fn = object.at("fn").get<std::string>();
-  if (call.fn != "reflect" && call.fn != "refract")
-    throw UsageError(fmt::format("unknown fn \"{}\": use \"reflect\" or \"refract\"", call.fn));
-  call.I = floatVector(object, "I");
-  call.N = floatVector(object, "N");
-  if (call.I.size() != call.N.size())
-    throw UsageError(fmt::format("I has {} components and N has {}: they must match",
-                                 call.I.size(), call.N.size()));
-  if (call.fn == "refract") {
-    if (!object.contains("eta") || !object.at("eta").is_number())
-      throw UsageError("refract needs a number \"eta\"");
-    call.eta = static_cast<float>(object.at("eta").get<double>());
-  }
-  return call;
-}
 
 json finite(const std::vector<double>& values) {
   json out = json::array();
@@ -152,7 +118,7 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend)
     Line line;
     line.number = number;
     try {
-      line.call = parseCall(text);
+      line.call = parseEvalLine(text);
     } catch (const json::exception& error) {
       line.error = fmt::format("line {}: not valid JSON ({})", number, error.what());
     } catch (const UsageError& error) {

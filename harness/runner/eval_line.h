@@ -1,0 +1,13 @@
+#pragma once
+// One line of `snell eval` input: {"fn":"refract","I":[...],"N":[...],"eta":0.66}.
+#include <string>
+
+#include "oracle/builtin_probe.h"
+
+namespace snell {
+
+// Throws nlohmann::json::exception for text that is not JSON, UsageError
+// for JSON that is not a call (unknown fn, wrong lengths, missing eta).
+BuiltinCall parseEvalLine(const std::string& text);
+
+}  // namespace snell
