@@ -1,0 +1,35 @@
+#pragma once
+// The GLSL built-ins on Interval, each with the bound the precision rules
+// give it (GLSL 4.60 section 4.7.1, Vulkan SPIR-V precision appendix). A
+// built-in whose precision is "inherited" is its defining formula evaluated
+// with the Interval operations.
+#include <span>
+
+#include "oracle/interval.h"
+
+namespace snell {
+
+// 2 ULP; undefined for x <= 0.
+Interval inversesqrt(const Interval& x);
+// Inherited from 1.0 / inversesqrt(x); sqrt(0) is 0 (the formula's limit),
+// undefined for x < 0.
+Interval sqrt(const Interval& x);
+// 3 + 2|x| ULP.
+Interval exp2(const Interval& x);
+// 3 ULP outside [0.5, 2], absolute 2^-21 inside; undefined for x <= 0.
+Interval log2(const Interval& x);
+// Inherited from exp2(y * log2(x)); undefined for x < 0, and for x = 0 with
+// y <= 0; pow(0, y > 0) is 0.
+Interval pow(const Interval& x, const Interval& y);
+// Exact.
+Interval max(const Interval& a, const Interval& b);
+Interval min(const Interval& a, const Interval& b);
+
+// a[0]*b[0] + ... + a[n-1]*b[n-1] as dot() and matrix * vector compute it.
+// Implementations may sum in any order and fuse any product: the bound is
+// the exact range widened by gamma_n * sum |a_i b_i| (Higham), which holds
+// for every order, with unit roundoff 2^-23 because each step may round to
+// either neighbouring float.
+Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b);
+
+}  // namespace snell

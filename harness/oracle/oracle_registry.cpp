@@ -1,0 +1,42 @@
+// The listing oracles by the name a manifest's `oracle` field gives. A new
+// listing adds its file under listings/ and one line here.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+
+#include "core/errors.h"
+#include "oracle/listings/orange_book_fresnel.h"
+#include "oracle/vertex_oracle.h"
+
+namespace snell {
+namespace {
+
+struct RegisteredOracle {
+  const char* name;
+  std::unique_ptr<VertexOracle> (*make)();
+};
+
+constexpr std::array kOracles = {
+    RegisteredOracle{listings::kOrangeBookFresnelName, &listings::makeOrangeBookFresnelOracle},
+};
+
+}  // namespace
+
+std::vector<std::string> vertexOracleNames() {
+  std::vector<std::string> names;
+  for (const RegisteredOracle& oracle : kOracles) names.emplace_back(oracle.name);
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::unique_ptr<VertexOracle> makeVertexOracle(const std::string& name) {
+  for (const RegisteredOracle& oracle : kOracles) {
+    if (name == oracle.name) return oracle.make();
+  }
+  throw UsageError(fmt::format("unknown oracle '{}'; known oracles: {}", name,
+                               fmt::join(vertexOracleNames(), ", ")));
+}
+
+}  // namespace snell
