@@ -1,0 +1,27 @@
+#pragma once
+// The descriptor-backed variables a SPIR-V module declares, read from the
+// module itself: glslang's reflection describes the linked program, but a
+// stage's own module is what the pipeline layout has to match.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace snell::vk {
+
+struct DescriptorResource {
+  std::string name;  // the variable's name, or its block type's name when the variable has none
+  std::uint32_t set = 0;
+  std::uint32_t binding = 0;
+  bool uniformBuffer =
+      false;  // a Uniform-storage block (as opposed to samplers, images, storage buffers)
+};
+
+struct DescriptorResources {
+  std::vector<DescriptorResource> resources;
+  std::string error;  // empty when the module parsed
+};
+
+DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv);
+
+}  // namespace snell::vk
