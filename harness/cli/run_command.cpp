@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "core/case.h"
 #include "core/errors.h"
+#include "core/manifest_check.h"
 #include "report/atomic_file.h"
 #include "runner/case_result_json.h"
 #include "report/junit.h"
@@ -34,22 +35,35 @@ struct RunOptions {
 // manifest or a missing stage file stops the run with exit 2 up front.
 void validateCases(const std::vector<Case>& cases, SceneCache& scenes) {
   for (const Case& c : cases) {
-    loadProgram(*c.manifest);
-    resolveBindings(*c.manifest, scenes.get(c.spec.scene));
-    makeVertexOracle(c.manifest->oracle);
+    const ProgramSource program = loadProgram(*c.manifest);
+    const Scene* scene = nullptr;
+    try {
+      scene = &scenes.get(c.spec.scene);
+    } catch (const UsageError& error) {
+      throw UsageError(fmt::format("{}:{}: {}", c.manifest->path.string(), c.spec.line, error.what()));
+    }
+    const ResolvedBindings bindings = resolveBindings(*c.manifest, *scene);
+    checkManifestAgainstProgram(*c.manifest, program, bindings);
+    try {
+      makeVertexOracle(c.manifest->oracle);
+    } catch (const UsageError& error) {
+      throw UsageError(fmt::format("{}:{}: {}", c.manifest->path.string(), c.manifest->oracleLine,
+                                   error.what()));
+    }
   }
 }
 
 void printThroughput(const std::vector<CaseResult>& results) {
-  std::map<std::string, std::pair<std::size_t, double>> perBackend;  // components, seconds
+  std::map<std::string, std::pair<std::size_t, double>> perBackend;  // vectors, seconds
   std::map<std::string, double> worst;
   for (const CaseResult& r : results) {
-    perBackend[r.backend].first += r.componentsChecked();
+    perBackend[r.backend].first += r.vectorsChecked();
     perBackend[r.backend].second += r.backendSeconds;
     worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
   }
   for (const auto& [backend, totals] : perBackend)
-    fmt::print("{}: {} components checked, {:.0f} per second of backend time, worst slack {:.3f}\n",
+    fmt::print("{}: {} vectors checked, {:.0f} per second of backend time (compile, draw, read back), "
+               "worst slack {:.3f}\n",
                backend, totals.first, totals.second > 0 ? totals.first / totals.second : 0.0,
                worst[backend]);
 }

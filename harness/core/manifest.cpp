@@ -151,6 +151,7 @@ class ManifestReader {
     m.vertexFile = requiredString(stages, "vertex", lineOf(stages));
     m.fragmentFile = optionalString(stages, "fragment");
     m.oracle = requiredString(root, "oracle", 1);
+    m.oracleLine = lineOf(*root.get("oracle"));
 
     if (const toml::node* constants = root.get("constants")) {
       const toml::table* table = constants->as_table();
@@ -170,6 +171,7 @@ class ManifestReader {
     m.uniforms = bindings(root, "uniforms");
 
     const toml::table& capture = requiredTable(root, "capture", 1);
+    m.captureLine = lineOf(capture);
     if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
     if (m.captureVertex.empty()) fail(lineOf(capture), "`capture.vertex` names no output to read back");
 
@@ -183,6 +185,7 @@ class ManifestReader {
       CaseSpec spec;
       spec.line = lineOf(node);
       spec.scene = requiredString(table, "scene", spec.line);
+      spec.line = lineOf(*table.get("scene"));  // point messages at the scene, not the header
       if (const toml::node* checks = table.get("checks")) spec.checks = stringArray(*checks, "checks");
       else spec.checks = {"vectors"};
       for (const std::string& check : spec.checks)

@@ -39,10 +39,12 @@ struct Manifest {
   std::string vertexFile;      // relative to the manifest's folder
   std::string fragmentFile;
   std::string oracle;
+  int oracleLine = 0;
   ConstantMap constants;
   std::vector<Binding> inputs;
   std::vector<Binding> uniforms;
   std::vector<std::string> captureVertex;
+  int captureLine = 0;
   std::vector<CaseSpec> cases;
   double timeoutSeconds = 60;  // per case; `snell run --timeout` overrides
 };

@@ -17,11 +17,11 @@ std::string slackText(double s) { return std::isfinite(s) ? fmt::format("{:.3f}"
 void printSummaryTable(std::ostream& out, const std::vector<CaseResult>& results) {
   std::size_t idWidth = 4;
   for (const CaseResult& r : results) idWidth = std::max(idWidth, r.caseId.size());
-  fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>9}  {:>8}\n", "case", idWidth,
-             "backend", "status", "vectors", "undefined", "worst", "time");
+  fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>11}  {:>8}\n", "case", idWidth,
+             "backend", "status", "vectors", "undefined", "worst slack", "time");
   for (const CaseResult& r : results)
-    fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>9}  {:>7.3f}s\n", r.caseId, idWidth,
-               r.backend, statusName(r.status), r.vertices, r.componentsUndefined(),
+    fmt::print(out, "{:<{}}  {:<7}  {:<12}  {:>8}  {:>10}  {:>11}  {:>7.3f}s\n", r.caseId, idWidth,
+               r.backend, statusName(r.status), r.vectorsChecked(), r.componentsUndefined(),
                slackText(r.worstSlack()), r.seconds);
   std::map<std::string, int> counts;
   for (const CaseResult& r : results) ++counts[statusName(r.status)];

@@ -24,6 +24,8 @@ struct CaseResult {
   double backendSeconds = 0;  // compile + draw + read back
   double oracleSeconds = 0;   // 0 when the oracle result came from the cache
 
+  // One vector (or scalar) per captured output per vertex.
+  std::size_t vectorsChecked() const { return vertices * varyings.size(); }
   std::size_t componentsChecked() const;
   std::size_t componentsUndefined() const;
   std::size_t componentsFailed() const;

@@ -23,8 +23,10 @@ struct Conformance {
     return *slot;
   }
   static Conformance& get() {
-    static Conformance instance;
-    return instance;
+    // Never destroyed: tearing a GL context down from a static destructor
+    // runs after Mesa's own exit handlers and crashes inside libOSMesa.
+    static Conformance* instance = new Conformance;
+    return *instance;
   }
 };
 
