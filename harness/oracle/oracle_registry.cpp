@@ -7,6 +7,7 @@
 #include <array>
 
 #include "core/errors.h"
+#include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_fresnel.h"
 #include "oracle/vertex_oracle.h"
 
@@ -20,6 +21,7 @@ struct RegisteredOracle {
 
 constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookFresnelName, &listings::makeOrangeBookFresnelOracle},
+    RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
 };
 
 }  // namespace

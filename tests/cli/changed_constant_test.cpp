@@ -67,5 +67,10 @@ TEST(ChangedConstant, SwappedReflectArgumentsFailOnBothBackends) {
                                   "reflect(n, i)"));
 }
 
+TEST(ChangedConstant, ChromaticEtaREditedFailsOnBothBackends) {
+  expectEveryCaseFails(editedCopy("orange-book/14.3-chromatic", "chromatic.vert",
+                                  "const float EtaR = 0.65;", "const float EtaR = 0.66;"));
+}
+
 }  // namespace
 }  // namespace snell
