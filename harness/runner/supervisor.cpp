@@ -103,8 +103,7 @@ class Supervision {
                               elapsed(slot)));
   }
 
-  void timedOut(Slot& slot) {
-    const double seconds = elapsed(slot);
+  void timedOut(Slot& slot, double seconds) {
     slot.worker->finish(true);
     const std::string tail = slot.worker->stderrTail(10);
     slot.worker.reset();
@@ -160,9 +159,17 @@ class Supervision {
       if (fds[k].fd == slot.worker->stderrFd()) slot.worker->drainStderr();
       else readResults(slot);
     }
+    // Every expired worker is signalled before any is reaped: reaping one
+    // that is tearing down JIT threads takes a while, and must not make the
+    // next one overrun its own limit.
     const Clock::time_point now = Clock::now();
+    std::vector<std::pair<Slot*, double>> expired;
     for (Slot& slot : slots_)
-      if (slot.task && slot.worker && now >= slot.deadline) timedOut(slot);
+      if (slot.task && slot.worker && now >= slot.deadline) {
+        expired.emplace_back(&slot, elapsed(slot));
+        slot.worker->kill();
+      }
+    for (auto& [slot, seconds] : expired) timedOut(*slot, seconds);
   }
 
   const std::vector<Task>& tasks_;

@@ -107,6 +107,10 @@ void WorkerProcess::drainStderr() {
   }
 }
 
+void WorkerProcess::kill() {
+  if (pid_ > 0) ::kill(pid_, SIGKILL);
+}
+
 std::string WorkerProcess::finish(bool kill) {
   closeFd(inFd_);
   if (pid_ <= 0) return "already reaped";

@@ -23,6 +23,8 @@ class WorkerProcess {
   bool stdoutClosed() const { return outFd_ < 0; }
   int stdoutFd() const { return outFd_; }
   int stderrFd() const { return errFd_; }
+  // Sends SIGKILL without waiting, so several hung workers die at once.
+  void kill();
   // Kills (SIGKILL) if still running and reaps; returns a description of
   // how it ended: "killed by signal 11 (Segmentation fault)", "exit 2".
   std::string finish(bool kill);

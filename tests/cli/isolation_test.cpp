@@ -1,0 +1,128 @@
+// Real faults in real workers: a listing that never finishes on either
+// backend, and a worker killed from outside. Each costs only its own case.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The published Listing 14.1 beside the endless-loop fault.
+fs::path shadersWithFault() {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-isolation-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", dir / "fresnel");
+  fs::copy(SNELL_SOURCE_ROOT "/tests/faults/endless-loop", dir / "endless-loop");
+  return dir;
+}
+
+std::map<std::string, nlohmann::json> resultsByKey(const fs::path& file) {
+  std::map<std::string, nlohmann::json> out;
+  std::ifstream in(file);
+  for (std::string line; std::getline(in, line);) {
+    const auto j = nlohmann::json::parse(line);
+    out[j["backend"].get<std::string>() + " " + j["case"].get<std::string>()] = j;
+  }
+  return out;
+}
+
+pid_t spawnSnell(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {SNELL_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  std::vector<char*> raw;
+  for (auto& a : argv) raw.push_back(a.data());
+  raw.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = -1;
+  EXPECT_EQ(posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+int exitCode(pid_t pid) {
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The `snell worker` children of `parent`, read from /proc.
+std::vector<pid_t> workersOf(pid_t parent) {
+  std::vector<pid_t> workers;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream stat(entry.path() / "stat");
+    std::string text((std::istreambuf_iterator<char>(stat)), {});
+    const std::size_t close = text.rfind(')');
+    if (close == std::string::npos) continue;
+    std::istringstream rest(text.substr(close + 2));
+    char state;
+    pid_t ppid = 0;
+    rest >> state >> ppid;
+    if (ppid == parent) workers.push_back(std::stoi(name));
+  }
+  return workers;
+}
+
+TEST(Isolation, EndlessListingTimesOutOnBothBackendsAndOthersPass) {
+  const fs::path shaders = shadersWithFault();
+  const fs::path json = shaders / "results.jsonl";
+  const pid_t pid = spawnSnell({"run", "-j", "2", "--shaders", shaders.string(), "--json",
+                                json.string()});
+  EXPECT_EQ(exitCode(pid), 1);
+  const auto results = resultsByKey(json);
+  ASSERT_EQ(results.size(), 6u);
+  for (const char* backend : {"gl", "vk"}) {
+    const std::string b = backend;
+    EXPECT_EQ(results.at(b + " faults/endless-loop/sweep")["status"], "Timeout");
+    EXPECT_EQ(results.at(b + " orange-book/14.1-fresnel/sphere")["status"], "Pass");
+    EXPECT_EQ(results.at(b + " orange-book/14.1-fresnel/sweep")["status"], "Pass");
+  }
+  fs::remove_all(shaders);
+}
+
+TEST(Isolation, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
+  const fs::path shaders = shadersWithFault();
+  const fs::path json = shaders / "results.jsonl";
+  // One worker, the endless case first: it is the case running when the
+  // worker is killed; the Fresnel cases after it need a fresh worker.
+  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120",
+                                "--shaders", shaders.string(), "--json", json.string()});
+  std::vector<pid_t> workers;
+  for (int k = 0; k < 200 && workers.empty(); ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    workers = workersOf(pid);
+  }
+  ASSERT_EQ(workers.size(), 1u);
+  std::this_thread::sleep_for(std::chrono::seconds(1));  // well inside the endless case
+  kill(workers[0], SIGKILL);
+  EXPECT_EQ(exitCode(pid), 1);
+  const auto results = resultsByKey(json);
+  ASSERT_EQ(results.size(), 3u);
+  const auto& killed = results.at("gl faults/endless-loop/sweep");
+  EXPECT_EQ(killed["status"], "Crash");
+  EXPECT_NE(killed["message"].get<std::string>().find("signal 9"), std::string::npos) << killed;
+  EXPECT_EQ(results.at("gl orange-book/14.1-fresnel/sphere")["status"], "Pass");
+  EXPECT_EQ(results.at("gl orange-book/14.1-fresnel/sweep")["status"], "Pass");
+  fs::remove_all(shaders);
+}
+
+}  // namespace
