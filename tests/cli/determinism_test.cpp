@@ -1,0 +1,46 @@
+// Verdicts that do not wobble: the same build on the same driver gives the
+// same statuses and metric values, bit for bit, whatever the run, the
+// number of llvmpipe/lavapipe threads and the number of workers.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The results of one run with timings removed: everything else must repeat.
+std::string runResults(const std::string& environment, int jobs) {
+  const fs::path json = fs::temp_directory_path() / fmt::format("snell-determinism-{}.jsonl", getpid());
+  const std::string command = fmt::format(
+      "{} {} run -j {} --filter 'orange-book/*' --json {} >/dev/null 2>&1", environment,
+      SNELL_BINARY, jobs, json.string());
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << command;
+  std::ifstream in(json);
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    nlohmann::json j = nlohmann::json::parse(line);
+    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds"}) j.erase(timing);
+    out += j.dump() + "\n";
+  }
+  fs::remove(json);
+  return out;
+}
+
+TEST(Determinism, TenRunsThreadCountsAndWorkerCountsAgreeBitForBit) {
+  const std::string first = runResults("", 2);
+  ASSERT_FALSE(first.empty());
+  for (int run = 1; run < 10; ++run) EXPECT_EQ(runResults("", 2), first) << "run " << run;
+  for (const char* threads : {"0", "1", "2"})
+    for (int jobs : {1, 2})
+      EXPECT_EQ(runResults(fmt::format("LP_NUM_THREADS={}", threads), jobs), first)
+          << "LP_NUM_THREADS=" << threads << " -j " << jobs;
+}
+
+}  // namespace
