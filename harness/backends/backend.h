@@ -3,10 +3,15 @@
 // backend a program as published plus the values to bind, and gets floats
 // back; what the API needs to do that (transform feedback, SPIR-V
 // post-passes, descriptor layouts) stays inside the backend.
+#include <array>
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "core/cube_map.h"
+#include "core/image.h"
 #include "core/program_source.h"
 #include "core/values.h"
 
@@ -39,6 +44,27 @@ struct CaptureOutcome {
   std::vector<CapturedVarying> varyings;  // same order as CaptureJob::varyings
 };
 
+// Draws the listing's triangles into an RGBA32F colour target (with a 32-bit
+// float depth buffer, depth test LESS, cleared to 1) and reads the pixels
+// back. Clip space follows OpenGL: +y up in the image; scenes keep every
+// visible point at NDC z in [0, 1], so both APIs' depth ranges agree.
+struct RenderJob {
+  ProgramSource program;
+  UniformMap uniforms;                  // by GLSL name; names the program lacks are ignored
+  AttributeMap attributes;              // by GLSL name
+  std::vector<std::uint32_t> indices;   // triangle list, counter-clockwise front faces
+  std::map<std::string, const CubeMap*> cubeMaps;  // samplerCube uniforms by GLSL name
+  int width = 256;
+  int height = 256;
+  std::array<float, 4> clearColor{0, 0, 0, 0};
+  bool cullBackFaces = true;
+};
+
+struct RenderOutcome {
+  CompileOutcome compile;  // !compile.ok => image is empty
+  Image image;             // width x height, row 0 at the top; the fragment shader's output 0
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -52,6 +78,9 @@ class Backend {
   // as fp32, one value per vertex, in vertex order. Throws SetupError when
   // the API itself fails (not for a compile error).
   virtual CaptureOutcome captureVertexOutputs(const CaptureJob& job) = 0;
+
+  // Renders the job; throws SetupError when the API itself fails.
+  virtual RenderOutcome render(const RenderJob& job) = 0;
 };
 
 struct BackendOptions {

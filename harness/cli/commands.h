@@ -13,6 +13,7 @@ Command addRunCommand(CLI::App& app);
 Command addListCommand(CLI::App& app);
 Command addEvalCommand(CLI::App& app);
 Command addWorkerCommand(CLI::App& app);
+Command addBlessCommand(CLI::App& app);
 
 // The repository's own listings and goldens, where the binary was built from.
 std::string defaultShadersDir();

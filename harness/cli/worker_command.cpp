@@ -13,6 +13,8 @@ Command addWorkerCommand(CLI::App& app) {
       ->check(CLI::IsMember({"gl", "vk"}));
   sub->add_option("--shaders", options->shaders, "Folder of listings")->required();
   sub->add_flag("--validation", options->validation, "Vulkan validation layer");
+  sub->add_option("--out", options->outDir, "Folder for images, heat maps and masks")->required();
+  sub->add_option("--golden", options->goldenDir, "Folder of goldens; empty for none")->required();
   return [options] { return runWorker(*options); };
 }
 

@@ -126,6 +126,26 @@ class ManifestReader {
     return out;
   }
 
+  // image = { fail = 0.004, warn = 0.002, failpercent = 0, hardfail = 0.05 }
+  ImageTolerance imageTolerance(const toml::table& caseTable, int caseLine) const {
+    const toml::node* node = caseTable.get("image");
+    if (!node || !node->is_table())
+      fail(caseLine, "the \"image\" check needs `image = { fail = ..., warn = ..., failpercent = "
+                     "..., hardfail = ... }` with the derivation in a comment");
+    const toml::table& table = *node->as_table();
+    auto number = [&](std::string_view key) {
+      const toml::node* value = table.get(key);
+      if (!value) fail(lineOf(*node), fmt::format("`image` is missing `{}`", key));
+      if (!numeric(*value) || *value->value<double>() < 0)
+        fail(lineOf(*value), fmt::format("`image.{}` must be a number >= 0", key));
+      return *value->value<double>();
+    };
+    ImageTolerance t{number("fail"), number("warn"), number("failpercent"), number("hardfail")};
+    if (t.warn > t.fail) fail(lineOf(*node), "`image.warn` must not exceed `image.fail`");
+    if (t.hardFail < t.fail) fail(lineOf(*node), "`image.hardfail` must not be below `image.fail`");
+    return t;
+  }
+
   Manifest read() const {
     toml::table root;
     try {
@@ -189,8 +209,9 @@ class ManifestReader {
       if (const toml::node* checks = table.get("checks")) spec.checks = stringArray(*checks, "checks");
       else spec.checks = {"vectors"};
       for (const std::string& check : spec.checks)
-        if (check != "vectors")
-          fail(spec.line, fmt::format("check `{}` is not known; use \"vectors\"", check));
+        if (check != "vectors" && check != "image")
+          fail(spec.line, fmt::format("check `{}` is not known; use \"vectors\" or \"image\"", check));
+      if (spec.has("image")) spec.image = imageTolerance(table, spec.line);
       m.cases.push_back(std::move(spec));
     }
     return m;
@@ -211,6 +232,10 @@ std::string readFile(const fs::path& path, const fs::path& manifest, const char*
 }
 
 }  // namespace
+
+bool CaseSpec::has(const std::string& check) const {
+  return std::find(checks.begin(), checks.end(), check) != checks.end();
+}
 
 Manifest loadManifest(const fs::path& path) {
   if (!fs::is_regular_file(path))

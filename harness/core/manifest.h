@@ -24,10 +24,20 @@ struct Binding {
   int line = 0;                              // where it is written, for messages
 };
 
+// OpenImageIO idiff's rules for one image comparison (see compare/).
+struct ImageTolerance {
+  double fail = 0;
+  double warn = 0;
+  double failPercent = 0;
+  double hardFail = 0;
+};
+
 struct CaseSpec {
   std::string scene;
-  std::vector<std::string> checks;  // "vectors", later "image"
+  std::vector<std::string> checks;  // "vectors", "image"
+  ImageTolerance image;             // required with the "image" check
   int line = 0;
+  bool has(const std::string& check) const;
 };
 
 struct Manifest {

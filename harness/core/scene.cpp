@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/camera_math.h"
+#include "core/environment.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -51,6 +52,22 @@ Scene sphere() {
     }
   }
   scene.vertexCount = position.vertexCount();
+  // Counter-clockwise seen from outside; the degenerate triangles at the
+  // poles are left out.
+  const auto vertex = [](int stack, int slice) {
+    return static_cast<std::uint32_t>(stack * (kSlices + 1) + slice);
+  };
+  for (int stack = 0; stack < kStacks; ++stack)
+    for (int slice = 0; slice < kSlices; ++slice) {
+      if (stack > 0)
+        scene.indices.insert(scene.indices.end(), {vertex(stack, slice), vertex(stack, slice + 1),
+                                                   vertex(stack + 1, slice)});
+      if (stack + 1 < kStacks)
+        scene.indices.insert(scene.indices.end(), {vertex(stack, slice + 1),
+                                                   vertex(stack + 1, slice + 1),
+                                                   vertex(stack + 1, slice)});
+    }
+  scene.environment = std::make_shared<const CubeMap>(makeEnvironment());
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
   const Mat4d model = rotation({0.0, 1.0, 0.3}, 20.0 * kPi / 180);

@@ -1,5 +1,6 @@
 // The listing oracles by the name a manifest's `oracle` field gives. A new
-// listing adds its file under listings/ and one line here.
+// listing adds its file under listings/ and one line here (two when it
+// draws: its fragment part goes under the same name).
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -8,7 +9,11 @@
 
 #include "core/errors.h"
 #include "oracle/listings/orange_book_chromatic.h"
+#include "oracle/listings/orange_book_chromatic_fragment.h"
 #include "oracle/listings/orange_book_fresnel.h"
+#include "oracle/listings/orange_book_fresnel_fragment.h"
+#include "oracle/reference/fragment_oracle.h"
+#include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell {
@@ -22,6 +27,18 @@ struct RegisteredOracle {
 constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookFresnelName, &listings::makeOrangeBookFresnelOracle},
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
+};
+
+struct RegisteredFragmentOracle {
+  const char* name;
+  std::unique_ptr<FragmentOracle> (*make)();
+};
+
+constexpr std::array kFragmentOracles = {
+    RegisteredFragmentOracle{listings::kOrangeBookFresnelName,
+                             &listings::makeOrangeBookFresnelFragmentOracle},
+    RegisteredFragmentOracle{listings::kOrangeBookChromaticName,
+                             &listings::makeOrangeBookChromaticFragmentOracle},
 };
 
 }  // namespace
@@ -39,6 +56,18 @@ std::unique_ptr<VertexOracle> makeVertexOracle(const std::string& name) {
   }
   throw UsageError(fmt::format("unknown oracle '{}'; known oracles: {}", name,
                                fmt::join(vertexOracleNames(), ", ")));
+}
+
+bool hasFragmentOracle(const std::string& name) {
+  return std::any_of(kFragmentOracles.begin(), kFragmentOracles.end(),
+                     [&](const RegisteredFragmentOracle& oracle) { return name == oracle.name; });
+}
+
+std::unique_ptr<FragmentOracle> makeFragmentOracle(const std::string& name) {
+  for (const RegisteredFragmentOracle& oracle : kFragmentOracles) {
+    if (name == oracle.name) return oracle.make();
+  }
+  throw UsageError(fmt::format("oracle '{}' has no fragment part: it does not draw", name));
 }
 
 }  // namespace snell

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "backends/backend.h"
+#include "compare/image_compare.h"
 #include "compare/vector_check.h"
 #include "core/status.h"
 
@@ -19,6 +20,7 @@ struct CaseResult {
   DriverInfo driver;
   std::size_t vertices = 0;
   std::vector<VaryingCheck> varyings;
+  std::vector<ImageComparison> images;  // vs reference, vs golden, vs the other API
   std::string compileLog;
   double seconds = 0;         // the whole case
   double backendSeconds = 0;  // compile + draw + read back

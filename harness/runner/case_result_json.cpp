@@ -19,6 +19,41 @@ Status statusFromName(const std::string& name) {
   throw nlohmann::json::other_error::create(501, "unknown status " + name, nullptr);
 }
 
+nlohmann::json imageToJson(const ImageComparison& c) {
+  return {{"against", c.against},        {"verdict", imageVerdictName(c.verdict)},
+          {"max_error", number(c.maxError)}, {"mean_error", number(c.meanError)},
+          {"rms_error", number(c.rmsError)}, {"psnr", number(c.psnr)},
+          {"max_x", c.maxX},             {"max_y", c.maxY},
+          {"compared", c.compared},      {"failed", c.failed},
+          {"warned", c.warned},          {"masked", c.masked},
+          {"problem", c.problem}};
+}
+
+ImageVerdict verdictFromName(const std::string& name) {
+  for (ImageVerdict v : {ImageVerdict::Pass, ImageVerdict::Warn, ImageVerdict::Fail})
+    if (name == imageVerdictName(v)) return v;
+  throw nlohmann::json::other_error::create(501, "unknown image verdict " + name, nullptr);
+}
+
+ImageComparison imageFromJson(const nlohmann::json& j) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  ImageComparison c;
+  c.against = j.at("against").get<std::string>();
+  c.verdict = verdictFromName(j.at("verdict").get<std::string>());
+  c.maxError = numberOr(j.at("max_error"), kInf);
+  c.meanError = numberOr(j.at("mean_error"), kInf);
+  c.rmsError = numberOr(j.at("rms_error"), kInf);
+  c.psnr = numberOr(j.at("psnr"), kInf);
+  c.maxX = j.at("max_x").get<int>();
+  c.maxY = j.at("max_y").get<int>();
+  c.compared = j.at("compared").get<std::size_t>();
+  c.failed = j.at("failed").get<std::size_t>();
+  c.warned = j.at("warned").get<std::size_t>();
+  c.masked = j.at("masked").get<std::map<std::string, std::size_t>>();
+  c.problem = j.at("problem").get<std::string>();
+  return c;
+}
+
 }  // namespace
 
 nlohmann::json toJson(const CaseResult& r) {
@@ -37,6 +72,8 @@ nlohmann::json toJson(const CaseResult& r) {
                         {"worst_vertex", v.worstVertex},
                         {"first_failures", failures}});
   }
+  nlohmann::json images = nlohmann::json::array();
+  for (const ImageComparison& c : r.images) images.push_back(imageToJson(c));
   return {{"case", r.caseId},
           {"backend", r.backend},
           {"status", statusName(r.status)},
@@ -55,6 +92,7 @@ nlohmann::json toJson(const CaseResult& r) {
           {"components_failed", r.componentsFailed()},
           {"worst_slack", number(r.worstSlack())},
           {"varyings", varyings},
+          {"images", images},
           {"compile_log", r.compileLog},
           {"seconds", r.seconds},
           {"backend_seconds", r.backendSeconds},
@@ -91,6 +129,7 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
            f.at("lo").get<double>(), f.at("hi").get<double>(), numberOr(f.at("slack"), kInf)});
     r.varyings.push_back(std::move(check));
   }
+  for (const nlohmann::json& image : j.at("images")) r.images.push_back(imageFromJson(image));
   r.compileLog = j.at("compile_log").get<std::string>();
   r.seconds = j.at("seconds").get<double>();
   r.backendSeconds = j.at("backend_seconds").get<double>();

@@ -73,33 +73,69 @@ CaseResult CaseRunner::run(const Case& c) {
 
   const ResolvedBindings bindings = resolveBindings(m, scenes_.get(c.spec.scene));
   result.vertices = bindings.vertexCount;
-  const std::vector<OracleVarying>& expected = oracles_.get(c, bindings, &result.oracleSeconds);
+  try {
+    if (c.spec.has("vectors")) runVectors(c, bindings, result);
+    if (c.spec.has("image") && result.status != Status::CompileError) runImage(c, bindings, result);
+  } catch (const SetupError& error) {
+    result.status = Status::Fail;
+    result.message += fmt::format("backend error: {}\n", error.what());
+  }
+  result.seconds = secondsSince(start);
+  return result;
+}
 
+void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {
+  const Manifest& m = *c.manifest;
+  const std::vector<OracleVarying>& expected = oracles_.get(c, bindings, &result.oracleSeconds);
   CaptureJob job{loadProgram(m), bindings.uniforms, bindings.attributes, m.captureVertex,
                  bindings.vertexCount};
   const auto backendStart = std::chrono::steady_clock::now();
-  CaptureOutcome outcome;
-  try {
-    outcome = backend_.captureVertexOutputs(job);
-  } catch (const SetupError& error) {
-    result.status = Status::Fail;
-    result.message = fmt::format("backend error: {}", error.what());
-    result.seconds = secondsSince(start);
-    return result;
-  }
-  result.backendSeconds = secondsSince(backendStart);
+  const CaptureOutcome outcome = backend_.captureVertexOutputs(job);
+  result.backendSeconds += secondsSince(backendStart);
   result.compileLog = outcome.compile.log;
   if (!outcome.compile.ok) {
     result.status = Status::CompileError;
     result.message = outcome.compile.log;
-  } else {
-    for (std::size_t k = 0; k < expected.size(); ++k)
-      result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
-    result.status = result.componentsFailed() ? Status::Fail : Status::Pass;
-    result.message = describeFailures(result.varyings);
+    return;
   }
-  result.seconds = secondsSince(start);
-  return result;
+  for (std::size_t k = 0; k < expected.size(); ++k)
+    result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
+  if (result.componentsFailed()) result.status = worstOf(result.status, Status::Fail);
+  result.message += describeFailures(result.varyings);
+}
+
+void CaseRunner::runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {
+  const Scene& scene = scenes_.get(c.spec.scene);
+  const ReferenceImage& reference = references_.get(c, scene, bindings);
+  const auto backendStart = std::chrono::steady_clock::now();
+  const ImageCheck check = checkImage(backend_, c, scene, bindings, reference, imageOptions_);
+  result.backendSeconds += secondsSince(backendStart);
+  if (!check.compiled) {
+    result.status = Status::CompileError;
+    result.compileLog = check.compileLog;
+    result.message = check.compileLog;
+    return;
+  }
+  for (const ImageComparison& comparison : check.comparisons) {
+    result.images.push_back(comparison);
+    if (comparison.verdict == ImageVerdict::Pass) continue;
+    // Off the reference is wrong; off the golden is a change: a failure
+    // beyond `fail`, a quality warning between `warn` and `fail`.
+    const bool golden = comparison.against == "golden";
+    result.status = worstOf(result.status, comparison.verdict == ImageVerdict::Fail ? Status::Fail
+                                           : golden ? Status::QualityWarning
+                                                    : Status::Pass);
+    result.message += fmt::format(
+        "image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
+        comparison.against, imageVerdictName(comparison.verdict),
+        comparison.problem.empty() ? "" : " (" + comparison.problem + ")", comparison.maxError,
+        comparison.maxX, comparison.maxY, comparison.failed, comparison.compared,
+        c.spec.image.fail);
+  }
+  if (!check.goldenProblem.empty()) {
+    result.status = worstOf(result.status, Status::Fail);
+    result.message += check.goldenProblem + "\n";
+  }
 }
 
 }  // namespace snell

@@ -11,6 +11,7 @@
 #include "core/case.h"
 #include "oracle/vertex_oracle.h"
 #include "runner/case_result.h"
+#include "runner/image_check.h"
 
 namespace snell {
 
@@ -35,16 +36,24 @@ class SceneCache {
 
 class CaseRunner {
  public:
-  CaseRunner(Backend& backend, OracleCache& oracles, SceneCache& scenes)
-      : backend_(backend), oracles_(oracles), scenes_(scenes), driver_(backend.driverInfo()) {}
+  CaseRunner(Backend& backend, OracleCache& oracles, SceneCache& scenes,
+             ReferenceCache& references, ImageCheckOptions imageOptions)
+      : backend_(backend), oracles_(oracles), scenes_(scenes), references_(references),
+        imageOptions_(std::move(imageOptions)), driver_(backend.driverInfo()) {}
 
   // Never throws for what a driver does; UsageError for a broken manifest.
   CaseResult run(const Case& c);
 
  private:
+  void runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
+  void runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
+
+
   Backend& backend_;
   OracleCache& oracles_;
   SceneCache& scenes_;
+  ReferenceCache& references_;
+  ImageCheckOptions imageOptions_;
   DriverInfo driver_;
 };
 

@@ -70,6 +70,7 @@ class Supervision {
       std::vector<std::string> argv = {options_.executable, "worker", "--backend", task.backend,
                                        "--shaders", options_.shaders};
       if (options_.validation) argv.push_back("--validation");
+      argv.insert(argv.end(), {"--out", options_.outDir, "--golden", options_.goldenDir});
       slot.worker = std::make_unique<WorkerProcess>(argv);
       slot.backend = task.backend;
     }

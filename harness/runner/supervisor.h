@@ -24,6 +24,8 @@ struct SupervisorOptions {
   std::string executable;  // the snell binary to start workers from
   std::string shaders;
   bool validation = false;
+  std::string outDir;
+  std::string goldenDir;  // empty: no golden comparison
   int jobs = 1;
 };
 

@@ -23,13 +23,15 @@ int runWorker(const WorkerOptions& options) {
   std::unique_ptr<Backend> backend;  // loaded on the first case, not before
   OracleCache oracles;
   SceneCache scenes;
+  ReferenceCache references;
   std::unique_ptr<CaseRunner> runner;
   for (std::string id; std::getline(std::cin, id);) {
     auto it = byId.find(id);
     if (it == byId.end()) throw UsageError(fmt::format("worker: no case `{}`", id));
     if (!backend) {
       backend = makeBackend(options.backend, BackendOptions{.validation = options.validation});
-      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes);
+      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
+                                            ImageCheckOptions{options.outDir, options.goldenDir});
     }
     std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
   }

@@ -12,6 +12,8 @@ struct WorkerOptions {
   std::string backend;
   std::string shaders;
   bool validation = false;
+  std::string outDir;     // rendered images, heat maps and masks
+  std::string goldenDir;  // empty: no golden comparison (bless)
 };
 
 // Returns the process exit code.

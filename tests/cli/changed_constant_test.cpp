@@ -41,7 +41,9 @@ void expectEveryCaseFails(const fs::path& dir) {
     std::unique_ptr<Backend> backend = makeBackend(name, BackendOptions{.validation = true});
     OracleCache oracles;
     SceneCache scenes;
-    CaseRunner runner(*backend, oracles, scenes);
+    ReferenceCache references;
+    CaseRunner runner(*backend, oracles, scenes, references,
+                      ImageCheckOptions{dir / "out", SNELL_SOURCE_ROOT "/golden"});
     for (const Case& c : cases) {
       const CaseResult result = runner.run(c);
       EXPECT_EQ(result.status, Status::Fail) << name << " " << c.id;

@@ -1,6 +1,7 @@
 // Every case of the repository's listings, on both backends, as a test.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <memory>
 
 #include "backends/backend.h"
@@ -15,6 +16,8 @@ struct Conformance {
   std::vector<Case> cases = expandCases(manifests, "");
   OracleCache oracles;
   SceneCache scenes;
+  ReferenceCache references;
+  std::filesystem::path outDir = std::filesystem::temp_directory_path() / "snell-conformance-out";
   std::map<std::string, std::unique_ptr<Backend>> backends;
 
   Backend& backend(const std::string& name) {
@@ -40,7 +43,8 @@ class ConformanceCase : public ::testing::TestWithParam<Param> {};
 TEST_P(ConformanceCase, PassesAgainstTheOracle) {
   Conformance& all = Conformance::get();
   const Case& c = all.cases.at(GetParam().index);
-  CaseRunner runner(all.backend(GetParam().backend), all.oracles, all.scenes);
+  CaseRunner runner(all.backend(GetParam().backend), all.oracles, all.scenes, all.references,
+                    ImageCheckOptions{all.outDir, SNELL_SOURCE_ROOT "/golden"});
   const CaseResult result = runner.run(c);
   EXPECT_EQ(result.status, Status::Pass) << result.message;
   EXPECT_GT(result.componentsChecked(), 1000u);  // thousands of values, not a handful

@@ -140,7 +140,7 @@ const OracleVarying& varying(const std::vector<OracleVarying>& all, const std::s
 TEST(OracleOrangeBookFresnel, MatchesTheOpticsOnASphere) {
   const Scene scene;
   const auto out = makeVertexOracle("orange_book_fresnel")->evaluate(scene.input());
-  ASSERT_EQ(out.size(), 3u);
+  ASSERT_EQ(out.size(), 4u);  // and gl_Position
   const OracleVarying& reflect = varying(out, "Reflect");
   const OracleVarying& refract = varying(out, "Refract");
   const OracleVarying& ratio = varying(out, "Ratio");
@@ -157,6 +157,20 @@ TEST(OracleOrangeBookFresnel, MatchesTheOpticsOnASphere) {
     }
     EXPECT_NEAR(ratio.reference[v], e.ratio, 1e-12) << "vertex " << v;
     EXPECT_NEAR(ratio.strict[v], e.ratio, 1e-5) << "vertex " << v;
+  }
+}
+
+TEST(OracleOrangeBookFresnel, GlPositionIsTheModelViewProjectionOfTheVertex) {
+  const Scene scene;
+  const auto out = makeVertexOracle("orange_book_fresnel")->evaluate(scene.input());
+  const OracleVarying& position = varying(out, "gl_Position");
+  ASSERT_EQ(position.components, 4);
+  const Rigid mvp = rigid({0, 0, 1}, 0.1, {0, 0, -1});  // as the Scene sets MVPMatrix
+  for (std::size_t v = 0; v < scene.positions.size(); ++v) {
+    const Dir expected = mvp.apply(scene.positions[v]);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(position.reference[4 * v + k], expected[k], 1e-12) << "vertex " << v;
+    EXPECT_EQ(position.reference[4 * v + 3], 1.0) << "vertex " << v;
   }
 }
 

@@ -12,6 +12,11 @@ namespace {
 constexpr std::uint16_t kOpName = 5;
 constexpr std::uint16_t kOpMemberName = 6;
 constexpr std::uint16_t kOpMemberDecorate = 72;
+constexpr std::uint16_t kOpTypePointer = 32;
+constexpr std::uint16_t kOpVariable = 59;
+constexpr std::uint16_t kOpDecorate = 71;
+constexpr std::uint32_t kDecorationBinding = 33;
+constexpr std::uint32_t kDecorationDescriptorSet = 34;
 
 std::string stringAt(const Words& instruction, std::size_t first) {
   std::string text;
@@ -70,6 +75,35 @@ std::vector<std::pair<std::string, Words>> memberDecorations(const Words& module
     }
   }
   return decorations;
+}
+
+std::optional<Slot> descriptorSlot(const Words& module, const std::string& name) {
+  const std::optional<std::uint32_t> named = idNamed(module, name);
+  if (!named) return std::nullopt;
+  std::optional<std::uint32_t> variable;
+  std::map<std::uint32_t, std::uint32_t> pointees;
+  for (const Words& inst : instructionsOf(module)) {
+    const std::uint16_t opcode = inst[0] & 0xffff;
+    if (opcode == kOpTypePointer) pointees[inst[1]] = inst[3];
+    if (opcode == kOpVariable && (inst[2] == *named || pointees[inst[1]] == *named))
+      variable = inst[2];
+  }
+  if (!variable) return std::nullopt;
+  Slot slot;
+  int found = 0;
+  for (const Words& inst : instructionsOf(module)) {
+    if ((inst[0] & 0xffff) != kOpDecorate || inst[1] != *variable || inst.size() < 4) continue;
+    if (inst[2] == kDecorationDescriptorSet) {
+      slot.set = inst[3];
+      ++found;
+    }
+    if (inst[2] == kDecorationBinding) {
+      slot.binding = inst[3];
+      ++found;
+    }
+  }
+  if (found != 2) return std::nullopt;
+  return slot;
 }
 
 ProgramSource vertexProgram(const std::string& source, const std::string& path) {

@@ -27,6 +27,16 @@ std::optional<std::uint32_t> idNamed(const Words& module, const std::string& nam
 std::vector<std::pair<std::string, Words>> memberDecorations(const Words& module,
                                                              const std::string& structName);
 
+struct Slot {
+  std::uint32_t set = 0;
+  std::uint32_t binding = 0;
+};
+
+// DescriptorSet and Binding of the variable named `name`, or of the one
+// whose pointee type is named `name` (how an unnamed block such as
+// gl_DefaultUniformBlock is found); nullopt when there is none.
+std::optional<Slot> descriptorSlot(const Words& module, const std::string& name);
+
 // Vertex shader source with the given body, `#version 140`, for probes.
 ProgramSource vertexProgram(const std::string& source, const std::string& path);
 

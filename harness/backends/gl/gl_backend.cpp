@@ -29,11 +29,23 @@ class GlBackend final : public Backend {
 
   CaptureOutcome captureVertexOutputs(const CaptureJob& job) override {
     GlContextState& state = stateFor(job.program.profile);
-    GlCaptureProgram& program = state.programs().get(job.program, job.varyings);
+    GlLinkedProgram& program = state.programs().get(job.program, job.varyings);
     CaptureOutcome outcome;
     outcome.compile = program.compile;
     if (!outcome.compile.ok) return outcome;
     outcome.varyings = state.capture().run(program, job);
+    return outcome;
+  }
+
+  // Renders link with no feedback varyings, so a listing that is both
+  // captured and rendered is linked twice; each link is cached.
+  RenderOutcome render(const RenderJob& job) override {
+    GlContextState& state = stateFor(job.program.profile);
+    GlLinkedProgram& program = state.programs().get(job.program, {});
+    RenderOutcome outcome;
+    outcome.compile = program.compile;
+    if (!outcome.compile.ok) return outcome;
+    outcome.image = state.renderer().run(program, job);
     return outcome;
   }
 

@@ -5,7 +5,9 @@ namespace snell {
 GlContextState::GlContextState(Profile profile) : context_(OsmesaContext::create(profile)) {
   context_.makeCurrent();
   programs_ = std::make_unique<GlProgramCache>();
-  capture_ = std::make_unique<GlVertexCapture>();
+  inputs_ = std::make_unique<GlVertexInputs>();
+  capture_ = std::make_unique<GlVertexCapture>(*inputs_);
+  renderer_ = std::make_unique<GlRenderer>(*inputs_);
 }
 
 GlContextState::~GlContextState() {
@@ -15,7 +17,9 @@ GlContextState::~GlContextState() {
   } catch (...) {
     return;  // objects die with the context anyway
   }
+  renderer_.reset();
   capture_.reset();
+  inputs_.reset();
   programs_.reset();
 }
 

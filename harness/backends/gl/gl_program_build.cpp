@@ -119,6 +119,15 @@ BuiltProgram buildGlProgram(const ProgramSource& source,
   throwOnGlError("glLinkProgram");
 
   if (linked != GL_TRUE) return built;
+  if (hasFragment) {
+    if (!bindLoneOutputToZero(program.id())) {
+      appendLog(log, heading, "relinking with the fragment output bound to location 0 failed:\n" +
+                                  programLog(program.id()));
+      return built;
+    }
+    built.fragmentOutputs = queryFragmentOutputs(program.id());
+    throwOnGlError("querying the fragment shader outputs");
+  }
   glDetachShader(program.id(), vertex.id());
   if (hasFragment) glDetachShader(program.id(), fragment.id());
   built.program = std::move(program);

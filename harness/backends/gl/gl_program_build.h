@@ -4,6 +4,7 @@
 
 #include "backends/backend.h"
 #include "backends/gl/gl_api.h"
+#include "backends/gl/gl_fragment_outputs.h"
 
 namespace snell {
 
@@ -27,11 +28,13 @@ class GlProgram {
 struct BuiltProgram {
   GlProgram program;       // id 0 unless outcome.ok
   CompileOutcome outcome;  // logs prefixed by stage and file
+  std::vector<GlFragmentOutput> fragmentOutputs;  // empty without a fragment stage
 };
 
 // Compiles the vertex stage and, when present, the fragment stage, then links.
 // feedbackVaryings are declared before linking (transform feedback needs
-// that); pass none for a plain compile check. Never throws for bad GLSL.
+// that); pass none for a plain compile check or a render. A lone fragment
+// output ends up at location 0. Never throws for bad GLSL.
 BuiltProgram buildGlProgram(const ProgramSource& source,
                             const std::vector<std::string>& feedbackVaryings);
 

@@ -49,13 +49,46 @@ std::string glslNameOf(GLenum type) {
     case GL_INT_VEC4: return "ivec4";
     case GL_UNSIGNED_INT: return "uint";
     case GL_BOOL: return "bool";
+    case GL_SAMPLER_1D: return "sampler1D";
     case GL_SAMPLER_2D: return "sampler2D";
+    case GL_SAMPLER_3D: return "sampler3D";
     case GL_SAMPLER_CUBE: return "samplerCube";
+    case GL_SAMPLER_2D_SHADOW: return "sampler2DShadow";
+    case GL_SAMPLER_CUBE_SHADOW: return "samplerCubeShadow";
+    case GL_SAMPLER_2D_ARRAY: return "sampler2DArray";
+    case GL_SAMPLER_2D_RECT: return "sampler2DRect";
     default: {
       char hex[32];
       std::snprintf(hex, sizeof hex, "GL type 0x%04X", type);
       return hex;
     }
+  }
+}
+
+// Every opaque type a shader can sample or load from; each needs a texture
+// bound to its unit, which no Value provides.
+bool isSampler(GLenum type) {
+  switch (type) {
+    case GL_SAMPLER_1D: case GL_SAMPLER_2D: case GL_SAMPLER_3D: case GL_SAMPLER_CUBE:
+    case GL_SAMPLER_1D_SHADOW: case GL_SAMPLER_2D_SHADOW: case GL_SAMPLER_1D_ARRAY:
+    case GL_SAMPLER_2D_ARRAY: case GL_SAMPLER_1D_ARRAY_SHADOW: case GL_SAMPLER_2D_ARRAY_SHADOW:
+    case GL_SAMPLER_2D_MULTISAMPLE: case GL_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_SAMPLER_CUBE_SHADOW: case GL_SAMPLER_BUFFER: case GL_SAMPLER_2D_RECT:
+    case GL_SAMPLER_2D_RECT_SHADOW: case GL_SAMPLER_CUBE_MAP_ARRAY:
+    case GL_SAMPLER_CUBE_MAP_ARRAY_SHADOW:
+    case GL_INT_SAMPLER_1D: case GL_INT_SAMPLER_2D: case GL_INT_SAMPLER_3D:
+    case GL_INT_SAMPLER_CUBE: case GL_INT_SAMPLER_1D_ARRAY: case GL_INT_SAMPLER_2D_ARRAY:
+    case GL_INT_SAMPLER_2D_MULTISAMPLE: case GL_INT_SAMPLER_2D_MULTISAMPLE_ARRAY:
+    case GL_INT_SAMPLER_BUFFER: case GL_INT_SAMPLER_2D_RECT: case GL_INT_SAMPLER_CUBE_MAP_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_1D: case GL_UNSIGNED_INT_SAMPLER_2D:
+    case GL_UNSIGNED_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_CUBE:
+    case GL_UNSIGNED_INT_SAMPLER_1D_ARRAY: case GL_UNSIGNED_INT_SAMPLER_2D_ARRAY:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE:
+    case GL_UNSIGNED_INT_SAMPLER_2D_MULTISAMPLE_ARRAY: case GL_UNSIGNED_INT_SAMPLER_BUFFER:
+    case GL_UNSIGNED_INT_SAMPLER_2D_RECT: case GL_UNSIGNED_INT_SAMPLER_CUBE_MAP_ARRAY:
+      return true;
+    default:
+      return false;
   }
 }
 
@@ -102,9 +135,13 @@ GlUniformTable::GlUniformTable(GLuint program) {
       slot.linkValue.resize(static_cast<std::size_t>(floats));
       glGetUniformfv(program, slot.location, slot.linkValue.data());
     }
+    if (isSampler(slot.type))
+      samplers_.push_back(Sampler{baseName(fullName), slot.location, slot.type, slot.arraySize});
     slots_[baseName(fullName)] = std::move(slot);
   }
 }
+
+std::string GlUniformTable::glslName(GLenum type) { return glslNameOf(type); }
 
 void GlUniformTable::apply(const UniformMap& uniforms) {
   // Everything is checked before anything is set, so a rejected job leaves

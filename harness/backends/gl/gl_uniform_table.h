@@ -22,6 +22,18 @@ class GlUniformTable {
   // Names the program lacks are ignored.
   void apply(const UniformMap& uniforms);
 
+  // Sampler uniforms are bound to texture units, not set from Values.
+  struct Sampler {
+    std::string name;
+    GLint location = -1;
+    GLenum type = 0;
+    GLint arraySize = 1;
+  };
+  const std::vector<Sampler>& samplers() const { return samplers_; }
+
+  // "samplerCube", "vec3", ...: how the shader declares a GL type.
+  static std::string glslName(GLenum type);
+
  private:
   struct Slot {
     GLint location = -1;
@@ -33,6 +45,7 @@ class GlUniformTable {
   static void checkSettable(const std::string& name, const Slot& slot, const Value& value);
 
   std::map<std::string, Slot> slots_;
+  std::vector<Sampler> samplers_;
 };
 
 }  // namespace snell

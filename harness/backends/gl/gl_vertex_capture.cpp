@@ -8,20 +8,6 @@
 namespace snell {
 
 namespace {
-void checkAttribute(const AttributeStream& stream, std::size_t vertexCount) {
-  if (stream.components < 1 || stream.components > 4)
-    throw UsageError("attribute '" + stream.name + "' has " + std::to_string(stream.components) +
-                     " components per vertex; 1 to 4 are possible");
-  if (stream.data.size() % static_cast<std::size_t>(stream.components) != 0)
-    throw UsageError("attribute '" + stream.name + "' has " + std::to_string(stream.data.size()) +
-                     " floats, not a multiple of its " + std::to_string(stream.components) +
-                     " components");
-  if (stream.vertexCount() < vertexCount)
-    throw UsageError("attribute '" + stream.name + "' has " +
-                     std::to_string(stream.vertexCount()) + " vertices; the job draws " +
-                     std::to_string(vertexCount));
-}
-
 // Undoes what a capture changed, whichever way it leaves.
 class CaptureStateGuard {
  public:
@@ -34,76 +20,40 @@ class CaptureStateGuard {
   ~CaptureStateGuard() {
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
     glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
     glBindVertexArray(0);
     glUseProgram(0);
   }
 };
 }  // namespace
 
-GlVertexCapture::GlVertexCapture() {
-  glGenVertexArrays(1, &vertexArray_);
+GlVertexCapture::GlVertexCapture(GlVertexInputs& inputs) : inputs_(inputs) {
   glGenBuffers(1, &feedbackBuffer_);
   glGenQueries(1, &primitivesQuery_);
-  throwOnGlError("creating the capture vertex array, buffer and query");
+  throwOnGlError("creating the capture feedback buffer and query");
 }
 
 GlVertexCapture::~GlVertexCapture() {
-  if (!attributeBuffers_.empty())
-    glDeleteBuffers(static_cast<GLsizei>(attributeBuffers_.size()), attributeBuffers_.data());
   glDeleteQueries(1, &primitivesQuery_);
   glDeleteBuffers(1, &feedbackBuffer_);
-  glDeleteVertexArrays(1, &vertexArray_);
 }
 
-std::vector<CapturedVarying> GlVertexCapture::run(GlCaptureProgram& program,
+std::vector<CapturedVarying> GlVertexCapture::run(GlLinkedProgram& program,
                                                   const CaptureJob& job) {
-  for (const auto& [name, stream] : job.attributes) {
-    if (program.attributeLocation(name) >= 0) checkAttribute(stream, job.vertexCount);
-  }
+  GlVertexInputs::check(program, job.attributes, job.vertexCount);
   if (job.vertexCount == 0 || program.varyings.stride == 0) {
     // No draw: with zero outputs glBeginTransformFeedback itself is an error.
     return program.varyings.split({}, 0);
   }
 
-  CaptureStateGuard guard(program.program.id(), vertexArray_);
+  CaptureStateGuard guard(program.program.id(), inputs_.vertexArray());
   program.uniforms.apply(job.uniforms);
   throwOnGlError("glUniform*");
-  bindAttributes(program, job);
+  inputs_.bindAttributes(program, job.attributes, job.vertexCount);
   const std::vector<float> records = drawAndRead(program, job.vertexCount);
   return program.varyings.split(records, job.vertexCount);
 }
 
-// Attributes the program has but the job leaves out read the generic
-// attribute value (0,0,0,1), so arrays from an earlier job are switched off.
-void GlVertexCapture::bindAttributes(GlCaptureProgram& program, const CaptureJob& job) {
-  unbindAttributes();
-  std::size_t used = 0;
-  for (const auto& [name, stream] : job.attributes) {
-    const GLint location = program.attributeLocation(name);
-    if (location < 0) continue;
-    if (used == attributeBuffers_.size()) {
-      attributeBuffers_.push_back(0);
-      glGenBuffers(1, &attributeBuffers_.back());
-    }
-    const std::size_t floats = job.vertexCount * static_cast<std::size_t>(stream.components);
-    glBindBuffer(GL_ARRAY_BUFFER, attributeBuffers_[used++]);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats * sizeof(float)),
-                 stream.data.data(), GL_STREAM_DRAW);
-    glVertexAttribPointer(static_cast<GLuint>(location), stream.components, GL_FLOAT, GL_FALSE, 0,
-                          nullptr);
-    glEnableVertexAttribArray(static_cast<GLuint>(location));
-    enabledLocations_.push_back(static_cast<GLuint>(location));
-  }
-  throwOnGlError("binding vertex attributes (glBufferData, glVertexAttribPointer)");
-}
-
-void GlVertexCapture::unbindAttributes() {
-  for (GLuint location : enabledLocations_) glDisableVertexAttribArray(location);
-  enabledLocations_.clear();
-}
-
-std::vector<float> GlVertexCapture::drawAndRead(const GlCaptureProgram& program,
+std::vector<float> GlVertexCapture::drawAndRead(const GlLinkedProgram& program,
                                                 std::size_t vertexCount) {
   const std::size_t floats = vertexCount * static_cast<std::size_t>(program.varyings.stride);
   const auto bytes = static_cast<GLsizeiptr>(floats * sizeof(float));

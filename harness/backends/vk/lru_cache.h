@@ -34,6 +34,14 @@ class LruCache {
     return *order_.front().second;
   }
 
+  // Drops the entry for `key`, if there is one.
+  void erase(const std::string& key) {
+    if (auto found = index_.find(key); found != index_.end()) {
+      order_.erase(found->second);
+      index_.erase(found);
+    }
+  }
+
  private:
   using Entry = std::pair<std::string, std::unique_ptr<Value>>;
   std::size_t capacity_;

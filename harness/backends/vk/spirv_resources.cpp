@@ -2,10 +2,26 @@
 
 #include <glslang/SPIRV/spirv.hpp>
 #include <map>
+#include <set>
 
 #include "backends/vk/spirv_module.h"
 
 namespace snell::vk {
+
+namespace {
+
+struct ImageType {
+  std::uint32_t dim = 0;
+  bool arrayed = false;
+};
+
+struct Variable {
+  std::uint32_t id;
+  std::uint32_t pointerType;
+  std::uint32_t storage;
+};
+
+}  // namespace
 
 DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv) {
   DescriptorResources result;
@@ -18,11 +34,9 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
   std::map<std::uint32_t, std::uint32_t> pointees;
   std::map<std::uint32_t, std::uint32_t> sets;
   std::map<std::uint32_t, std::uint32_t> bindings;
-  struct Variable {
-    std::uint32_t id;
-    std::uint32_t pointerType;
-    std::uint32_t storage;
-  };
+  std::set<std::uint32_t> blocks;
+  std::map<std::uint32_t, ImageType> images;
+  std::map<std::uint32_t, std::uint32_t> sampledImages;  // OpTypeSampledImage -> its image type
   std::vector<Variable> variables;
   for (const spirv::Instruction& inst : module.instructions) {
     const auto& ops = inst.operands;
@@ -30,9 +44,14 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
       if (auto name = spirv::literalString(ops, 1)) names[ops[0]] = *name;
     } else if (inst.opcode == spv::OpTypePointer && ops.size() >= 3) {
       pointees[ops[0]] = ops[2];
-    } else if (inst.opcode == spv::OpDecorate && ops.size() >= 3) {
-      if (ops[1] == spv::DecorationDescriptorSet) sets[ops[0]] = ops[2];
-      if (ops[1] == spv::DecorationBinding) bindings[ops[0]] = ops[2];
+    } else if (inst.opcode == spv::OpTypeImage && ops.size() >= 5) {
+      images[ops[0]] = {ops[2], ops[4] != 0};
+    } else if (inst.opcode == spv::OpTypeSampledImage && ops.size() >= 2) {
+      sampledImages[ops[0]] = ops[1];
+    } else if (inst.opcode == spv::OpDecorate && ops.size() >= 2) {
+      if (ops[1] == spv::DecorationDescriptorSet && ops.size() >= 3) sets[ops[0]] = ops[2];
+      if (ops[1] == spv::DecorationBinding && ops.size() >= 3) bindings[ops[0]] = ops[2];
+      if (ops[1] == spv::DecorationBlock) blocks.insert(ops[0]);
     } else if (inst.opcode == spv::OpVariable && ops.size() >= 3) {
       const std::uint32_t storage = ops[2];
       if (storage == spv::StorageClassUniform || storage == spv::StorageClassUniformConstant ||
@@ -42,12 +61,21 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
     }
   }
   for (const Variable& variable : variables) {
+    const std::uint32_t pointee = pointees[variable.pointerType];
     DescriptorResource resource;
     resource.name = names[variable.id];
-    if (resource.name.empty()) resource.name = names[pointees[variable.pointerType]];
+    if (resource.name.empty()) resource.name = names[pointee];
+    resource.variableId = variable.id;
     resource.set = sets[variable.id];
     resource.binding = bindings[variable.id];
-    resource.uniformBuffer = variable.storage == spv::StorageClassUniform;
+    if (variable.storage == spv::StorageClassUniform && blocks.count(pointee)) {
+      resource.kind = DescriptorKind::UniformBuffer;
+    } else if (variable.storage == spv::StorageClassUniformConstant &&
+               sampledImages.count(pointee)) {
+      resource.kind = DescriptorKind::CombinedImageSampler;
+      const ImageType image = images[sampledImages[pointee]];
+      resource.cube = image.dim == spv::DimCube && !image.arrayed;
+    }
     result.resources.push_back(std::move(resource));
   }
   return result;

@@ -9,17 +9,24 @@
 
 namespace snell::vk {
 
+enum class DescriptorKind {
+  UniformBuffer,         // a Uniform-storage Block, such as gl_DefaultUniformBlock
+  CombinedImageSampler,  // a sampler* uniform that is not an array
+  Other,                 // storage buffers, separate images and samplers, arrays
+};
+
 struct DescriptorResource {
   std::string name;  // the variable's name, or its block type's name when the variable has none
+  std::uint32_t variableId = 0;
   std::uint32_t set = 0;
   std::uint32_t binding = 0;
-  bool uniformBuffer =
-      false;  // a Uniform-storage block (as opposed to samplers, images, storage buffers)
+  DescriptorKind kind = DescriptorKind::Other;
+  bool cube = false;  // a CombinedImageSampler over a (non-arrayed) cube image: samplerCube
 };
 
 struct DescriptorResources {
-  std::vector<DescriptorResource> resources;
-  std::string error;  // empty when the module parsed
+  std::vector<DescriptorResource> resources;  // in declaration order
+  std::string error;                          // empty when the module parsed
 };
 
 DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv);

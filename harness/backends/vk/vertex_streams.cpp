@@ -38,8 +38,8 @@ VertexStreams matchVertexStreams(const std::vector<VertexInput>& inputs,
     }
     if (attribute.vertexCount() < vertexCount) {
       throw UsageError("attribute '" + input.name + "' has " +
-                       std::to_string(attribute.vertexCount()) +
-                       " vertices; the capture asks for " + std::to_string(vertexCount));
+                       std::to_string(attribute.vertexCount()) + " vertices; the job needs " +
+                       std::to_string(vertexCount));
     }
     const auto count = static_cast<std::uint32_t>(components);
     result.formats.push_back({input.location, count, false});

@@ -5,8 +5,7 @@
 #include <vector>
 
 #include "backends/vk/glsl_to_spirv.h"
-#include "backends/vk/vk_capture.h"
-#include "backends/vk/vk_capture_pipeline.h"
+#include "backends/vk/vk_vertex_input.h"
 #include "core/values.h"
 
 namespace snell::vk {

@@ -1,17 +1,21 @@
 #include "backends/vk/vk_backend.h"
 
+#include <algorithm>
 #include <exception>
 #include <utility>
 
 #include "backends/vk/glsl_to_spirv.h"
 #include "backends/vk/lru_cache.h"
+#include "backends/vk/program_key.h"
 #include "backends/vk/uniform_block_layout.h"
 #include "backends/vk/vertex_streams.h"
 #include "backends/vk/vk_capture.h"
-#include "backends/vk/vk_check.h"
 #include "backends/vk/vk_device.h"
 #include "backends/vk/vk_instance.h"
 #include "backends/vk/vk_prepared_capture.h"
+#include "backends/vk/vk_prepared_render.h"
+#include "backends/vk/vk_render.h"
+#include "backends/vk/vk_shader_module.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -25,6 +29,8 @@ using namespace snell::vk;
 constexpr std::size_t kCachedPrograms = 256;
 // Keeps vertexCount * stride far inside 32-bit sizes and a minute's work on llvmpipe.
 constexpr std::size_t kMaxVertices = std::size_t{1} << 24;
+// Beyond this a single RGBA32F read-back passes 1 GiB.
+constexpr int kMaxRenderSide = 8192;
 
 std::vector<CapturedVarying> splitRecords(std::span<const float> records,
                                           const PreparedCapture& prepared,
@@ -49,8 +55,11 @@ class VkBackend final : public Backend {
   explicit VkBackend(const BackendOptions& options)
       : instance_(options.validation),
         device_(instance_),
-        runner_(device_),
-        cache_(kCachedPrograms) {
+        captureRunner_(device_),
+        renderRunner_(device_),
+        programs_(kCachedPrograms),
+        captures_(kCachedPrograms),
+        renders_(kCachedPrograms) {
     instance_.validationLog().throwIfAny("Vulkan start-up");
   }
 
@@ -73,6 +82,10 @@ class VkBackend final : public Backend {
     return validated("captureVertexOutputs", [&] { return capture(job); });
   }
 
+  RenderOutcome render(const RenderJob& job) override {
+    return validated("render", [&] { return draw(job); });
+  }
+
  private:
   // Runs `work`, then reports any validation message it caused as a SetupError.
   template <class Work>
@@ -91,19 +104,23 @@ class VkBackend final : public Backend {
   }
 
   void checkShaderModule(const std::vector<std::uint32_t>& spirv) {
-    VkShaderModuleCreateInfo info{};
-    info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-    info.codeSize = spirv.size() * sizeof(std::uint32_t);
-    info.pCode = spirv.data();
-    VkShaderModule module = VK_NULL_HANDLE;
-    check(vkCreateShaderModule(device_.handle(), &info, nullptr, &module), "vkCreateShaderModule");
-    vkDestroyShaderModule(device_.handle(), module, nullptr);
+    const ShaderModule module(device_, spirv);
+  }
+
+  // Captures and renders of one program share its compile; the reference
+  // is valid until the next call.
+  const VulkanProgram& compiled(const ProgramSource& source) {
+    return programs_.getOrMake(programKey(source), [&] {
+      return std::make_unique<VulkanProgram>(compileForVulkan(source));
+    });
   }
 
   CaptureOutcome capture(const CaptureJob& job) {
-    PreparedCapture& prepared = cache_.getOrMake(
-        preparedCaptureKey(job.program, job.varyings),
-        [&] { return prepareCapture(device_, runner_.renderPass(), job.program, job.varyings); });
+    PreparedCapture& prepared =
+        captures_.getOrMake(preparedCaptureKey(job.program, job.varyings), [&] {
+          return prepareCapture(device_, captureRunner_.renderPass(), compiled(job.program),
+                                job.program, job.varyings);
+        });
     CaptureOutcome outcome;
     outcome.compile = {prepared.program.ok, prepared.program.log};
     if (!prepared.program.ok) return outcome;
@@ -118,7 +135,7 @@ class VkBackend final : public Backend {
     std::size_t uniformBytes = 0;
     if (const auto& layout = prepared.program.uniformBlock) {
       uniformBytes = layout->size;
-      packUniforms(*layout, job.uniforms, runner_.uniformBlock(uniformBytes));
+      packUniforms(*layout, job.uniforms, captureRunner_.uniformBlock(uniformBytes));
     }
     if (job.vertexCount == 0) {
       outcome.varyings = splitRecords({}, prepared, 0);
@@ -127,8 +144,7 @@ class VkBackend final : public Backend {
 
     CaptureDraw draw;
     draw.pipeline = prepared.pipelines->pipeline(streams.formats);
-    draw.layout = prepared.pipelines->layout();
-    draw.descriptorSet = prepared.pipelines->descriptorSet();
+    draw.descriptors = &prepared.pipelines->descriptors();
     if (const auto binding = prepared.pipelines->uniformBinding())
       draw.uniformBinding = binding->binding;
     draw.uniformBytes = uniformBytes;
@@ -136,15 +152,78 @@ class VkBackend final : public Backend {
     // The pipeline draws triangles; the padding vertices are dropped below.
     draw.vertexCount = static_cast<std::uint32_t>((job.vertexCount + 2) / 3 * 3);
     draw.stride = prepared.stride;
-    outcome.varyings = splitRecords(runner_.run(draw), prepared, job.vertexCount);
+    outcome.varyings = splitRecords(captureRunner_.run(draw), prepared, job.vertexCount);
+    return outcome;
+  }
+
+  RenderOutcome draw(const RenderJob& job) {
+    if (job.program.fragment.empty()) {
+      throw UsageError(
+          (job.program.vertexPath.empty() ? "<vertex shader>" : job.program.vertexPath) +
+          ": a render needs a fragment shader");
+    }
+    const VkPhysicalDeviceLimits& limits = device_.limits();
+    const int maxWidth = static_cast<int>(std::min<std::uint32_t>(
+        {limits.maxFramebufferWidth, limits.maxImageDimension2D, kMaxRenderSide}));
+    const int maxHeight = static_cast<int>(std::min<std::uint32_t>(
+        {limits.maxFramebufferHeight, limits.maxImageDimension2D, kMaxRenderSide}));
+    if (job.width < 1 || job.height < 1 || job.width > maxWidth || job.height > maxHeight) {
+      throw UsageError("a " + std::to_string(job.width) + "x" + std::to_string(job.height) +
+                       " render is outside 1x1 to " + std::to_string(maxWidth) + "x" +
+                       std::to_string(maxHeight));
+    }
+    if (job.indices.size() % 3 != 0 || job.indices.size() > 3 * kMaxVertices) {
+      throw UsageError("a render takes whole triangles, at most " + std::to_string(kMaxVertices) +
+                       " of them; got " + std::to_string(job.indices.size()) + " indices");
+    }
+
+    PreparedRender& prepared = renders_.getOrMake(programKey(job.program), [&] {
+      return prepareRender(device_, renderRunner_.renderPass(), compiled(job.program), job.program);
+    });
+    RenderOutcome outcome;
+    outcome.compile = {prepared.program.ok, prepared.program.log};
+    if (!prepared.program.ok) return outcome;
+
+    RenderDraw draw;
+    for (const SamplerBinding& sampler : prepared.samplers) {
+      const auto found = job.cubeMaps.find(sampler.name);
+      if (found == job.cubeMaps.end() || !found->second) {
+        throw UsageError("the program samples cube map '" + sampler.name +
+                         "' but the render job gives none by that name");
+      }
+      draw.cubeMaps.push_back({sampler.name, sampler.binding, found->second});
+    }
+    const std::size_t vertexCount =
+        job.indices.empty()
+            ? 0
+            : std::size_t{*std::max_element(job.indices.begin(), job.indices.end())} + 1;
+    const VertexStreams streams =
+        matchVertexStreams(prepared.program.vertexInputs, job.attributes, vertexCount);
+    if (const auto& layout = prepared.program.uniformBlock) {
+      draw.uniformBytes = layout->size;
+      packUniforms(*layout, job.uniforms, renderRunner_.uniformBlock(layout->size));
+    }
+    draw.uniformBinding = prepared.uniformBinding;
+    draw.pipeline = prepared.pipelines->pipeline(streams.formats, job.cullBackFaces);
+    draw.descriptors = &prepared.pipelines->descriptors();
+    draw.streams = streams.streams;
+    draw.vertexCount = static_cast<std::uint32_t>(vertexCount);
+    draw.indices = job.indices;
+    draw.width = static_cast<std::uint32_t>(job.width);
+    draw.height = static_cast<std::uint32_t>(job.height);
+    draw.clearColor = job.clearColor;
+    outcome.image = renderRunner_.run(draw);
     return outcome;
   }
 
   // Declared in the order they are built; destroyed in reverse.
   VulkanInstance instance_;
   VulkanDevice device_;
-  CaptureRunner runner_;
-  LruCache<PreparedCapture> cache_;
+  CaptureRunner captureRunner_;
+  RenderRunner renderRunner_;
+  LruCache<VulkanProgram> programs_;
+  LruCache<PreparedCapture> captures_;
+  LruCache<PreparedRender> renders_;
 };
 
 }  // namespace

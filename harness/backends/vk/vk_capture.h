@@ -6,29 +6,26 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "backends/vk/vk_descriptor_set.h"
 #include "backends/vk/vk_device.h"
 #include "backends/vk/vk_host_buffer.h"
+#include "backends/vk/vk_one_time_commands.h"
+#include "backends/vk/vk_vertex_input.h"
 
 namespace snell::vk {
 
-struct VertexStream {
-  std::span<const float> data;  // `components` floats per vertex; one vertex when constant
-  std::uint32_t components = 4;
-  bool constant = false;
-};
-
 struct CaptureDraw {
   VkPipeline pipeline = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkDescriptorSet descriptorSet = VK_NULL_HANDLE;  // null when the shader has no uniform block
-  std::uint32_t uniformBinding = 0;
-  std::size_t uniformBytes = 0;       // as written through uniformBlock()
-  std::vector<VertexStream> streams;  // in pipeline binding order
-  std::uint32_t vertexCount = 0;      // a multiple of 3: the pipeline draws triangles
-  std::uint32_t stride = 0;           // bytes per vertex in transform feedback buffer 0
+  const ProgramDescriptorSet* descriptors = nullptr;
+  std::optional<std::uint32_t> uniformBinding;  // nullopt when the shader has no uniform block
+  std::size_t uniformBytes = 0;                 // as written through uniformBlock()
+  std::vector<VertexStream> streams;            // in pipeline binding order
+  std::uint32_t vertexCount = 0;                // a multiple of 3: the pipeline draws triangles
+  std::uint32_t stride = 0;                     // bytes per vertex in transform feedback buffer 0
 };
 
 class CaptureRunner {
@@ -50,14 +47,13 @@ class CaptureRunner {
 
  private:
   void destroy();
-  void record(const CaptureDraw& draw, const std::vector<VkDeviceSize>& streamOffsets);
+  void record(VkCommandBuffer commands, const CaptureDraw& draw,
+              const std::vector<VkDeviceSize>& streamOffsets);
 
   const VulkanDevice& device_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
   VkFramebuffer framebuffer_ = VK_NULL_HANDLE;
-  VkCommandPool pool_ = VK_NULL_HANDLE;
-  VkCommandBuffer commands_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
+  OneTimeCommands commands_;
   HostBuffer uniforms_;
   HostBuffer vertices_;
   HostBuffer captured_;

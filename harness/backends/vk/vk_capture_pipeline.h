@@ -4,25 +4,18 @@
 // vertex-only, rasterizer-discard pipeline per vertex input layout.
 #include <vulkan/vulkan.h>
 
-#include <compare>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "backends/vk/vk_descriptor_set.h"
 #include "backends/vk/vk_device.h"
+#include "backends/vk/vk_shader_module.h"
+#include "backends/vk/vk_vertex_input.h"
 
 namespace snell::vk {
-
-// One vertex buffer binding per shader input.
-struct VertexInputFormat {
-  std::uint32_t location = 0;
-  std::uint32_t components =
-      4;  // fp32 components the stream supplies; Vulkan fills the rest with (0, 0, 1)
-  bool constant = false;  // one value for every vertex (stride 0)
-  auto operator<=>(const VertexInputFormat&) const = default;
-};
 
 struct UniformBinding {
   std::uint32_t set = 0;
@@ -41,21 +34,15 @@ class CapturePipelines {
 
   // Built on first use for each layout, then reused.
   VkPipeline pipeline(const std::vector<VertexInputFormat>& inputs);
-  VkPipelineLayout layout() const { return layout_; }
-  VkDescriptorSet descriptorSet() const { return descriptorSet_; }  // null without a uniform block
+  const ProgramDescriptorSet& descriptors() const { return descriptors_; }
   std::optional<UniformBinding> uniformBinding() const { return uniformBinding_; }
 
  private:
-  void destroy();
-
   const VulkanDevice& device_;
   VkRenderPass renderPass_;
   std::optional<UniformBinding> uniformBinding_;
-  VkShaderModule module_ = VK_NULL_HANDLE;
-  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
-  VkPipelineLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
-  VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;
+  ShaderModule module_;
+  ProgramDescriptorSet descriptors_;
   std::map<std::vector<VertexInputFormat>, VkPipeline> pipelines_;
 };
 

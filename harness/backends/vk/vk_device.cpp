@@ -1,5 +1,6 @@
 #include "backends/vk/vk_device.h"
 
+#include <cstdio>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -113,6 +114,12 @@ DriverInfo describe(VkPhysicalDevice device,
   return info;
 }
 
+std::string hexFlags(std::uint32_t flags) {
+  char text[9];
+  std::snprintf(text, sizeof text, "%x", flags);
+  return text;
+}
+
 }  // namespace
 
 VulkanDevice::VulkanDevice(const VulkanInstance& instance) {
@@ -151,6 +158,9 @@ VulkanDevice::VulkanDevice(const VulkanInstance& instance) {
   driverInfo_ = describe(physical_, xfbProperties);
   maxXfbStride_ = xfbProperties.maxTransformFeedbackBufferDataStride;
   vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  VkPhysicalDeviceProperties properties{};
+  vkGetPhysicalDeviceProperties(physical_, &properties);
+  limits_ = properties.limits;
 
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{};
@@ -201,8 +211,9 @@ std::uint32_t VulkanDevice::memoryType(std::uint32_t typeBits, VkMemoryPropertyF
     if (!fallback) fallback = i;
   }
   if (fallback) return *fallback;
-  throw SetupError(driverInfo_.renderer +
-                   " has no host-visible, host-coherent memory for snell's buffers");
+  throw SetupError(driverInfo_.renderer + " has no memory type with property flags 0x" +
+                   hexFlags(required) + " for a resource that accepts types 0x" +
+                   hexFlags(typeBits));
 }
 
 }  // namespace snell::vk

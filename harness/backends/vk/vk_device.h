@@ -32,6 +32,7 @@ class VulkanDevice {
   const DriverInfo& driverInfo() const { return driverInfo_; }
   const TransformFeedbackCommands& transformFeedback() const { return xfb_; }
   std::uint32_t maxTransformFeedbackStride() const { return maxXfbStride_; }
+  const VkPhysicalDeviceLimits& limits() const { return limits_; }
 
   // A memory type in `typeBits` with all of `required`, preferring one that
   // also has `preferred`. Throws SetupError when there is none.
@@ -46,6 +47,7 @@ class VulkanDevice {
   DriverInfo driverInfo_;
   TransformFeedbackCommands xfb_;
   std::uint32_t maxXfbStride_ = 0;
+  VkPhysicalDeviceLimits limits_{};
   VkPhysicalDeviceMemoryProperties memory_{};
 };
 

@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "backends/vk/program_key.h"
 #include "backends/vk/spirv_resources.h"
 #include "backends/vk/spirv_validate.h"
 #include "core/errors.h"
@@ -19,7 +20,7 @@ std::optional<UniformBinding> defaultBlockBinding(std::span<const std::uint32_t>
     throw SetupError(file + ": cannot read the vertex SPIR-V: " + found.error);
   std::optional<UniformBinding> binding;
   for (const DescriptorResource& resource : found.resources) {
-    if (resource.uniformBuffer && resource.name == kDefaultUniformBlock) {
+    if (resource.kind == DescriptorKind::UniformBuffer && resource.name == kDefaultUniformBlock) {
       binding = UniformBinding{resource.set, resource.binding};
       continue;
     }
@@ -30,19 +31,14 @@ std::optional<UniformBinding> defaultBlockBinding(std::span<const std::uint32_t>
   return binding;
 }
 
-void appendField(std::string& key, const std::string& field) {
-  key += std::to_string(field.size());
-  key += ':';
-  key += field;
-}
-
 }  // namespace
 
 std::unique_ptr<PreparedCapture> prepareCapture(const VulkanDevice& device, VkRenderPass renderPass,
+                                                const VulkanProgram& compiled,
                                                 const ProgramSource& source,
                                                 std::span<const std::string> varyings) {
   auto prepared = std::make_unique<PreparedCapture>();
-  prepared->program = compileForVulkan(source);
+  prepared->program = compiled;
   if (!prepared->program.ok) return prepared;
 
   const std::string file = source.vertexPath.empty() ? "<vertex shader>" : source.vertexPath;
@@ -69,15 +65,8 @@ std::unique_ptr<PreparedCapture> prepareCapture(const VulkanDevice& device, VkRe
 }
 
 std::string preparedCaptureKey(const ProgramSource& source, std::span<const std::string> varyings) {
-  std::string key;
-  key.reserve(source.vertex.size() + source.fragment.size() + 128);
-  key += source.profile == Profile::Core ? "core;" : "compatibility;";
-  appendField(key, source.vertex);
-  appendField(key, source.fragment);
-  // Paths appear in the cached compile log, so they belong in the key too.
-  appendField(key, source.vertexPath);
-  appendField(key, source.fragmentPath);
-  for (const std::string& varying : varyings) appendField(key, varying);
+  std::string key = programKey(source);
+  for (const std::string& varying : varyings) appendKeyField(key, varying);
   return key;
 }
 

@@ -23,9 +23,11 @@ struct PreparedCapture {
   std::unique_ptr<CapturePipelines> pipelines;
 };
 
-// A compile error comes back inside the result; a varying that is not a
-// vertex output is a UsageError, and a Vulkan failure a SetupError.
+// `compiled` is `source` as compileForVulkan gave it; a compile error comes
+// back inside the result. A varying that is not a vertex output is a
+// UsageError, and a Vulkan failure a SetupError.
 std::unique_ptr<PreparedCapture> prepareCapture(const VulkanDevice& device, VkRenderPass renderPass,
+                                                const VulkanProgram& compiled,
                                                 const ProgramSource& source,
                                                 std::span<const std::string> varyings);
 

@@ -39,6 +39,15 @@ struct vec {
   const T& z() const requires(N >= 3) { return c[2]; }
   const T& w() const requires(N >= 4) { return c[3]; }
   vec<T, 3> xyz() const requires(N >= 3) { return vec<T, 3>(c[0], c[1], c[2]); }
+
+  // The colour names of the same components: a fragment part writes
+  // `refractColor.r = ...`.
+  T& r() { return c[0]; }
+  T& g() requires(N >= 2) { return c[1]; }
+  T& b() requires(N >= 3) { return c[2]; }
+  const T& r() const { return c[0]; }
+  const T& g() const requires(N >= 2) { return c[1]; }
+  const T& b() const requires(N >= 3) { return c[2]; }
 };
 
 template <class T>

@@ -78,6 +78,8 @@ struct OrangeBookChromatic {
     gl_Position = MVPMatrix * MCVertex;
   }
 
+  // The interface by GLSL name. gl_Position is an output for the reference
+  // renderer; a manifest captures only the listing's own `out` variables.
   template <class Visitor>
   void visit(Visitor& v) {
     v.input("MCVertex", MCVertex);
@@ -95,6 +97,7 @@ struct OrangeBookChromatic {
     v.output("RefractG", RefractG);
     v.output("RefractB", RefractB);
     v.output("Ratio", Ratio);
+    v.output("gl_Position", gl_Position);
   }
 };
 

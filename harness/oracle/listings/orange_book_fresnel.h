@@ -64,8 +64,8 @@ struct OrangeBookFresnel {
     gl_Position = MVPMatrix * MCvertex;
   }
 
-  // The interface by GLSL name. gl_Position is computed as the listing does
-  // but is not one of the captured vectors.
+  // The interface by GLSL name. gl_Position is an output for the reference
+  // renderer; a manifest captures only the listing's own `out` variables.
   template <class Visitor>
   void visit(Visitor& v) {
     v.input("MCvertex", MCvertex);
@@ -79,6 +79,7 @@ struct OrangeBookFresnel {
     v.output("Reflect", Reflect);
     v.output("Refract", Refract);
     v.output("Ratio", Ratio);
+    v.output("gl_Position", gl_Position);
   }
 };
 

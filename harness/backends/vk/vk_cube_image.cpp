@@ -1,0 +1,127 @@
+#include "backends/vk/vk_cube_image.h"
+
+#include <cstring>
+#include <string>
+
+#include "backends/vk/vk_check.h"
+#include "core/errors.h"
+
+namespace snell::vk {
+
+namespace {
+
+constexpr VkFormat kCubeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
+
+VkImageCreateInfo cubeInfo(const VulkanDevice& device, const CubeMap& map) {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(device.physical(), kCubeFormat, &properties);
+  const VkFormatFeatureFlags features = properties.optimalTilingFeatures;
+  const std::string renderer = device.driverInfo().renderer;
+  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0 ||
+      (features & VK_FORMAT_FEATURE_TRANSFER_DST_BIT) == 0) {
+    throw SetupError(renderer + " cannot sample VK_FORMAT_R32G32B32A32_SFLOAT images");
+  }
+  if (map.filter == CubeFilter::Linear &&
+      (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) == 0) {
+    throw SetupError(renderer +
+                     " lacks VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT for "
+                     "VK_FORMAT_R32G32B32A32_SFLOAT, so it cannot filter a float cube map "
+                     "linearly");
+  }
+  const auto size = static_cast<std::uint32_t>(map.size);
+  VkImageCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+  info.flags = VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = kCubeFormat;
+  info.extent = {size, size, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 6;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  return info;
+}
+
+VkImageMemoryBarrier layoutChange(VkImage image, VkImageLayout from, VkImageLayout to,
+                                  VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 6};
+  return barrier;
+}
+
+}  // namespace
+
+CubeImage::CubeImage(const VulkanDevice& device, const CubeMap& map, OneTimeCommands& commands,
+                     HostBuffer& staging)
+    : device_(device),
+      image_(device, cubeInfo(device, map), VK_IMAGE_VIEW_TYPE_CUBE, VK_IMAGE_ASPECT_COLOR_BIT) {
+  const VkFilter filter = map.filter == CubeFilter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = filter;
+  info.minFilter = filter;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.minLod = 0.0f;
+  info.maxLod = 0.0f;
+  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
+  try {
+    upload(map, commands, staging);
+  } catch (...) {
+    vkDestroySampler(device_.handle(), sampler_, nullptr);
+    throw;
+  }
+}
+
+CubeImage::~CubeImage() { vkDestroySampler(device_.handle(), sampler_, nullptr); }
+
+void CubeImage::upload(const CubeMap& map, OneTimeCommands& commands, HostBuffer& staging) {
+  const auto size = static_cast<std::uint32_t>(map.size);
+  const VkDeviceSize faceBytes = VkDeviceSize{size} * size * kTexelBytes;
+  staging.reserve(6 * faceBytes);
+  VkBufferImageCopy regions[6]{};
+  for (std::uint32_t face = 0; face < 6; ++face) {
+    // Face data row j becomes image row j: texel (i, j) then means the same
+    // to Vulkan's cube addressing as to the CubeMap's own definition.
+    std::memcpy(staging.data() + face * faceBytes, map.faces[face].data(), faceBytes);
+    regions[face].bufferOffset = face * faceBytes;
+    regions[face].imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, face, 1};
+    regions[face].imageExtent = {size, size, 1};
+  }
+
+  const VkCommandBuffer recording = commands.begin();
+  const VkImageMemoryBarrier toTransfer =
+      layoutChange(image_.image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   0, VK_ACCESS_TRANSFER_WRITE_BIT);
+  vkCmdPipelineBarrier(recording, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &toTransfer);
+  vkCmdCopyBufferToImage(recording, staging.handle(), image_.image(),
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 6, regions);
+  // Later submissions on the queue are in this barrier's second scope, so
+  // every render that samples the image waits for the copy.
+  const VkImageMemoryBarrier toShader =
+      layoutChange(image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                   VK_ACCESS_SHADER_READ_BIT);
+  vkCmdPipelineBarrier(recording, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &toShader);
+  commands.submitAndWait("cube map upload");
+}
+
+}  // namespace snell::vk

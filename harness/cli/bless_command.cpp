@@ -1,0 +1,87 @@
+// `snell bless`: renders the image cases and writes their goldens, only when
+// asked, only for the cases it ran, and only for images that are correct
+// (within the tolerance of the CPU reference): a wrong image is never blessed.
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "cli/commands.h"
+#include "cli/suite_session.h"
+#include "compare/image_compare.h"
+#include "compare/image_io.h"
+#include "core/errors.h"
+#include "golden/golden_store.h"
+#include "runner/image_check.h"
+
+namespace snell::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+nlohmann::json metadataOf(const CaseResult& r, const Case& c, const Image& image) {
+  return {{"case", r.caseId},
+          {"backend", r.backend},
+          {"api", r.driver.api},
+          {"api_version", r.driver.apiVersion},
+          {"renderer", r.driver.renderer},
+          {"driver_version", r.driver.driverVersion},
+          {"device_type", r.driver.deviceType},
+          {"cpu_features", cpuFeatures()},
+          {"width", image.width},
+          {"height", image.height},
+          {"tolerance",
+           {{"fail", c.spec.image.fail},
+            {"warn", c.spec.image.warn},
+            {"failpercent", c.spec.image.failPercent},
+            {"hardfail", c.spec.image.hardFail}}}};
+}
+
+// What blessing changes, against the golden it replaces.
+std::string describeChange(const fs::path& goldenDir, const Case& c, const std::string& backend,
+                           const Image& image) {
+  try {
+    const Golden old = readGolden(goldenDir, c.id, backend, image.width, image.height);
+    const ImageComparison change = compareImages("golden", image, old.image, {}, c.spec.image);
+    if (change.maxError == 0) return "unchanged";
+    return fmt::format("changed: max error {:.6g} at ({}, {}), {} pixels over {}, {} over {}",
+                       change.maxError, change.maxX, change.maxY, change.failed, c.spec.image.fail,
+                       change.warned, c.spec.image.warn);
+  } catch (const UsageError&) {
+    return "new";
+  }
+}
+
+int bless(const SuiteOptions& options) {
+  if (!fs::is_directory(options.golden))
+    throw UsageError(fmt::format("{}: no such golden folder; create it or pass --golden DIR",
+                                 options.golden));
+  const SuiteRun suite = runSuite(options, true, false);
+  std::map<std::string, const Case*> cases;
+  for (const Case& c : suite.cases) cases[c.id] = &c;
+  int refused = 0;
+  for (const CaseResult& r : suite.results) {
+    const Case& c = *cases.at(r.caseId);
+    if (r.status != Status::Pass) {
+      ++refused;
+      fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status), r.message);
+      continue;
+    }
+    const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));
+    const std::string change = describeChange(options.golden, c, r.backend, image);
+    writeGolden(options.golden, r.caseId, r.backend, image, metadataOf(r, c, image));
+    fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change);
+  }
+  return refused ? 1 : 0;
+}
+
+}  // namespace
+
+Command addBlessCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "bless", "Render the image cases and write their goldens (only correct images are blessed)");
+  auto options = std::make_shared<SuiteOptions>();
+  addSuiteOptions(*sub, *options);
+  return [options] { return bless(*options); };
+}
+
+}  // namespace snell::cli

@@ -1,0 +1,18 @@
+#pragma once
+// Float RGBA images to and from files through OpenImageIO: EXR for
+// comparison (lossless float), PNG for people.
+#include <filesystem>
+
+#include "core/image.h"
+
+namespace snell {
+
+// Throws UsageError naming the file and what is wrong (missing, unreadable,
+// truncated, not 4 channels) and what to do.
+Image readImage(const std::filesystem::path& path);
+
+// Writes to a temporary file beside `path` and renames it into place, so a
+// reader never sees half a file. PNG output is clamped to [0, 1], sRGB-encoded.
+void writeImageAtomically(const std::filesystem::path& path, const Image& image);
+
+}  // namespace snell

@@ -1,0 +1,74 @@
+#include "golden/golden_store.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "compare/image_io.h"
+#include "core/errors.h"
+#include "core/atomic_file.h"
+
+namespace snell {
+
+namespace fs = std::filesystem;
+
+GoldenFiles goldenFiles(const fs::path& root, const std::string& caseId, const std::string& backend) {
+  const fs::path dir = root / caseId;
+  return {dir / (backend + ".exr"), dir / (backend + ".png"), dir / (backend + ".json")};
+}
+
+Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
+                  int expectedWidth, int expectedHeight) {
+  const GoldenFiles files = goldenFiles(root, caseId, backend);
+  const std::string hint =
+      fmt::format("check it, or bless a new one with `snell bless --backend {} --filter '{}'`",
+                  backend, caseId);
+  Golden golden;
+  try {
+    golden.image = readImage(files.image);
+  } catch (const UsageError& error) {
+    throw UsageError(fmt::format("golden {}; {}", error.what(), hint));
+  }
+  if (golden.image.width != expectedWidth || golden.image.height != expectedHeight)
+    throw UsageError(fmt::format("golden {}: is {}x{}, the scene renders {}x{}; {}",
+                                 files.image.string(), golden.image.width, golden.image.height,
+                                 expectedWidth, expectedHeight, hint));
+  std::ifstream in(files.metadata);
+  if (!in) throw UsageError(fmt::format("golden {}: missing; {}", files.metadata.string(), hint));
+  try {
+    golden.metadata = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& error) {
+    throw UsageError(fmt::format("golden {}: not valid JSON ({}); {}", files.metadata.string(),
+                                 error.what(), hint));
+  }
+  return golden;
+}
+
+void writeGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
+                 const Image& image, const nlohmann::json& metadata) {
+  const GoldenFiles files = goldenFiles(root, caseId, backend);
+  fs::create_directories(files.image.parent_path());
+  writeImageAtomically(files.image, image);
+  writeImageAtomically(files.preview, image);
+  writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+}
+
+std::string cpuFeatures() {
+  // The flags that change llvmpipe's vector width and instruction choice.
+  static const std::set<std::string> kRelevant = {"sse4_1", "sse4_2", "avx",     "avx2",
+                                                   "fma",    "f16c",   "avx512f", "avx512bw"};
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("flags", 0) != 0) continue;
+    std::istringstream words(line.substr(line.find(':') + 1));
+    std::string out;
+    for (std::string flag; words >> flag;)
+      if (kRelevant.count(flag)) out += (out.empty() ? "" : " ") + flag;
+    return out;
+  }
+  return "unknown";
+}
+
+}  // namespace snell

@@ -1,0 +1,37 @@
+#pragma once
+// Blessed images by case id and backend: golden/<case id>/<backend>.exr
+// (compared), .png (for people) and .json (the driver that produced it and
+// the tolerance in force). Goldens change only through `snell bless`.
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/image.h"
+
+namespace snell {
+
+struct GoldenFiles {
+  std::filesystem::path image, preview, metadata;
+};
+
+GoldenFiles goldenFiles(const std::filesystem::path& root, const std::string& caseId,
+                        const std::string& backend);
+
+struct Golden {
+  Image image;
+  nlohmann::json metadata;
+};
+
+// Throws UsageError naming the file, what is wrong (missing, unreadable,
+// truncated, wrong size) and what to do (`snell bless --filter ...`).
+Golden readGolden(const std::filesystem::path& root, const std::string& caseId,
+                  const std::string& backend, int expectedWidth, int expectedHeight);
+
+// Writes the three files, each atomically (temporary file, then rename).
+void writeGolden(const std::filesystem::path& root, const std::string& caseId,
+                 const std::string& backend, const Image& image, const nlohmann::json& metadata);
+
+// The CPU features llvmpipe and lavapipe choose their code paths by.
+std::string cpuFeatures();
+
+}  // namespace snell

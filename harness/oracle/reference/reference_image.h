@@ -1,0 +1,55 @@
+#pragma once
+// The CPU reference image of a drawing listing: the same triangles
+// rasterised on the CPU with perspective-correct interpolation of the
+// listing's vertex outputs (from its vertex oracle, in double), then the
+// listing's fragment part evaluated per pixel with cube maps sampled as the
+// GL/Vulkan specs define. No graphics API in here.
+#include <array>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/cube_map.h"
+#include "core/image.h"
+#include "core/values.h"
+
+namespace snell {
+
+// Why a pixel is left out of the gate. Masked pixels are counted and
+// reported, never failed.
+enum class PixelMask : std::uint8_t {
+  None = 0,        // compared
+  Silhouette = 1,  // partial coverage: fill rules and sub-pixel precision may differ
+  FaceEdge = 2,    // a lookup direction within the precision bound of a cube face edge
+  Undefined = 3,   // the listing is undefined here (zero refract vector fed to a lookup, NaN)
+};
+const char* pixelMaskName(PixelMask mask);
+
+struct ReferenceImage {
+  Image color;                      // the reference colour, linear float
+  std::vector<PixelMask> mask;      // width * height, row 0 at the top
+  std::size_t count(PixelMask m) const;
+};
+
+struct ReferenceInput {
+  std::string oracle;               // the manifest's `oracle`: names the vertex and fragment parts
+  const UniformMap& uniforms;
+  const ConstantMap& constants;
+  const AttributeMap& attributes;
+  std::size_t vertexCount = 0;
+  const std::vector<std::uint32_t>& indices;  // triangle list, counter-clockwise front faces
+  std::map<std::string, const CubeMap*> cubeMaps;  // samplerCube uniforms by GLSL name
+  int width = 256;
+  int height = 256;
+  std::array<float, 4> clearColor{0, 0, 0, 0};
+  bool cullBackFaces = true;
+};
+
+// Whether the listing named by `oracle` has a fragment part (it draws).
+bool hasFragmentOracle(const std::string& oracle);
+
+// Throws UsageError when the oracle has no fragment part or an input is missing.
+ReferenceImage renderReferenceImage(const ReferenceInput& input);
+
+}  // namespace snell

@@ -1,0 +1,106 @@
+#include "runner/image_check.h"
+
+#include <fmt/format.h>
+
+#include "compare/image_io.h"
+#include "core/errors.h"
+#include "golden/golden_store.h"
+
+namespace snell {
+
+namespace fs = std::filesystem;
+
+std::map<std::string, const CubeMap*> environmentBindings(const Manifest& m, const Scene& scene) {
+  std::map<std::string, const CubeMap*> out;
+  for (const Binding& b : m.uniforms)
+    if (const auto* semantic = std::get_if<std::string>(&b.source);
+        semantic && *semantic == "environment" && scene.environment)
+      out[b.name] = scene.environment.get();
+  return out;
+}
+
+const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
+                                          const ResolvedBindings& bindings) {
+  if (auto it = images_.find(c.id); it != images_.end()) return it->second;
+  const Manifest& m = *c.manifest;
+  ReferenceInput input{m.oracle,        bindings.uniforms, m.constants,   bindings.attributes,
+                       bindings.vertexCount, scene.indices, environmentBindings(m, scene),
+                       scene.width,     scene.height,      {0, 0, 0, 0},  true};
+  return images_.emplace(c.id, renderReferenceImage(input)).first->second;
+}
+
+fs::path renderedImagePath(const fs::path& outDir, const std::string& caseId,
+                           const std::string& backend) {
+  return outDir / caseId / (backend + ".exr");
+}
+
+fs::path maskImagePath(const fs::path& outDir, const std::string& caseId) {
+  return outDir / caseId / "mask.exr";
+}
+
+Image maskAsImage(const ReferenceImage& reference) {
+  Image image(reference.color.width, reference.color.height);
+  for (std::size_t p = 0; p < reference.mask.size(); ++p)
+    image.pixels[p * 4] = static_cast<float>(reference.mask[p]);
+  return image;
+}
+
+std::vector<PixelMask> maskFromImage(const Image& image) {
+  std::vector<PixelMask> mask(static_cast<std::size_t>(image.width) * image.height);
+  for (std::size_t p = 0; p < mask.size(); ++p)
+    mask[p] = static_cast<PixelMask>(static_cast<int>(image.pixels[p * 4]));
+  return mask;
+}
+
+ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
+                      const ResolvedBindings& bindings, const ReferenceImage& reference,
+                      const ImageCheckOptions& options) {
+  const Manifest& m = *c.manifest;
+  RenderJob job;
+  job.program = loadProgram(m);
+  job.uniforms = bindings.uniforms;
+  job.attributes = bindings.attributes;
+  job.indices = scene.indices;
+  job.cubeMaps = environmentBindings(m, scene);
+  job.width = scene.width;
+  job.height = scene.height;
+  const RenderOutcome outcome = backend.render(job);
+  ImageCheck check;
+  if (!outcome.compile.ok) {
+    check.compiled = false;
+    check.compileLog = outcome.compile.log;
+    return check;
+  }
+  const std::string name = backend.name();
+  const fs::path dir = options.outDir / c.id;
+  fs::create_directories(dir);
+  writeImageAtomically(renderedImagePath(options.outDir, c.id, name), outcome.image);
+  writeImageAtomically(dir / (name + ".png"), outcome.image);
+  // Both backends' workers write these; the contents are the same and each
+  // write is a rename, so neither sees the other's half-written file.
+  writeImageAtomically(dir / "reference.png", reference.color);
+  writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
+  writeImageAtomically(maskImagePath(options.outDir, c.id), maskAsImage(reference));
+
+  ImageComparison vsReference =
+      compareImages("reference", outcome.image, reference.color, reference.mask, c.spec.image);
+  writeDifferenceHeatMap(dir / (name + "-vs-reference.png"), outcome.image, reference.color,
+                         reference.mask, c.spec.image.fail);
+  check.comparisons.push_back(std::move(vsReference));
+
+  if (!options.goldenDir.empty()) {
+    try {
+      const Golden golden = readGolden(options.goldenDir, c.id, name, scene.width, scene.height);
+      ImageComparison vsGolden =
+          compareImages("golden", outcome.image, golden.image, reference.mask, c.spec.image);
+      writeDifferenceHeatMap(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
+                             reference.mask, c.spec.image.fail);
+      check.comparisons.push_back(std::move(vsGolden));
+    } catch (const UsageError& error) {
+      check.goldenProblem = error.what();
+    }
+  }
+  return check;
+}
+
+}  // namespace snell

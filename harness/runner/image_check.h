@@ -1,0 +1,54 @@
+#pragma once
+// The pixel half of a case: render on the backend, then hold the image
+// against the CPU reference (correct?) and the golden (changed?). The third
+// comparison, against the other API, needs both backends' images and is
+// made by the supervisor (cross_api_check.h).
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "backends/backend.h"
+#include "compare/image_compare.h"
+#include "core/case.h"
+#include "oracle/reference/reference_image.h"
+
+namespace snell {
+
+struct ImageCheckOptions {
+  std::filesystem::path outDir;     // where images, heat maps and masks are written
+  std::filesystem::path goldenDir;  // empty: no golden comparison (bless runs)
+};
+
+class ReferenceCache {
+ public:
+  const ReferenceImage& get(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
+
+ private:
+  std::map<std::string, ReferenceImage> images_;
+};
+
+struct ImageCheck {
+  bool compiled = true;
+  std::string compileLog;
+  std::vector<ImageComparison> comparisons;  // reference, then golden
+  std::string goldenProblem;                 // a missing or unreadable golden
+};
+
+// The samplerCube uniforms a manifest binds to the scene's environment.
+std::map<std::string, const CubeMap*> environmentBindings(const Manifest& m, const Scene& scene);
+
+// Where a backend's rendered image of a case is written.
+std::filesystem::path renderedImagePath(const std::filesystem::path& outDir,
+                                        const std::string& caseId, const std::string& backend);
+
+// The reference's mask travels between processes as an EXR (mask value in red).
+std::filesystem::path maskImagePath(const std::filesystem::path& outDir, const std::string& caseId);
+Image maskAsImage(const ReferenceImage& reference);
+std::vector<PixelMask> maskFromImage(const Image& image);
+
+ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
+                      const ResolvedBindings& bindings, const ReferenceImage& reference,
+                      const ImageCheckOptions& options);
+
+}  // namespace snell

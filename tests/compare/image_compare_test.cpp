@@ -1,0 +1,96 @@
+#include "compare/image_compare.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace snell {
+namespace {
+
+Image flat(float value, int size = 8) {
+  Image image(size, size);
+  std::fill(image.pixels.begin(), image.pixels.end(), value);
+  return image;
+}
+
+const ImageTolerance kTolerance{0.004, 0.002, 0.0, 0.05};
+
+TEST(ImageCompare, IdenticalImagesPass) {
+  const ImageComparison r = compareImages("reference", flat(0.5f), flat(0.5f), {}, kTolerance);
+  EXPECT_EQ(r.verdict, ImageVerdict::Pass);
+  EXPECT_EQ(r.maxError, 0.0);
+  EXPECT_EQ(r.compared, 64u);
+}
+
+TEST(ImageCompare, OnePixelBeyondFailFails) {
+  Image observed = flat(0.5f);
+  observed.at(3, 2)[1] += 0.005f;
+  const ImageComparison r = compareImages("golden", observed, flat(0.5f), {}, kTolerance);
+  EXPECT_EQ(r.verdict, ImageVerdict::Fail);
+  EXPECT_EQ(r.failed, 1u);
+  EXPECT_EQ(r.maxX, 3);
+  EXPECT_EQ(r.maxY, 2);
+  EXPECT_NEAR(r.maxError, 0.005, 1e-6);
+}
+
+TEST(ImageCompare, BetweenWarnAndFailWarns) {
+  Image observed = flat(0.5f);
+  observed.at(0, 0)[0] += 0.003f;
+  const ImageComparison r = compareImages("golden", observed, flat(0.5f), {}, kTolerance);
+  EXPECT_EQ(r.verdict, ImageVerdict::Warn);
+  EXPECT_EQ(r.warned, 1u);
+  EXPECT_EQ(r.failed, 0u);
+}
+
+TEST(ImageCompare, FailPercentAllowsThatShareAndNoMore) {
+  const ImageTolerance lenient{0.004, 0.002, 2.0, 0.05};  // 2% of 64 pixels is 1.28
+  Image one = flat(0.5f);
+  one.at(1, 1)[0] += 0.01f;
+  EXPECT_EQ(compareImages("golden", one, flat(0.5f), {}, lenient).verdict, ImageVerdict::Warn);
+  one.at(2, 1)[0] += 0.01f;
+  EXPECT_EQ(compareImages("golden", one, flat(0.5f), {}, lenient).verdict, ImageVerdict::Fail);
+}
+
+TEST(ImageCompare, HardFailFailsWhateverThePercent) {
+  const ImageTolerance lenient{0.004, 0.002, 50.0, 0.05};
+  Image observed = flat(0.5f);
+  observed.at(1, 1)[2] += 0.06f;
+  EXPECT_EQ(compareImages("golden", observed, flat(0.5f), {}, lenient).verdict, ImageVerdict::Fail);
+}
+
+TEST(ImageCompare, MaskedPixelsAreCountedNotCompared) {
+  Image observed = flat(0.5f);
+  observed.at(4, 4)[0] = 10.0f;
+  std::vector<PixelMask> mask(64, PixelMask::None);
+  mask[4 * 8 + 4] = PixelMask::Silhouette;
+  const ImageComparison r = compareImages("reference", observed, flat(0.5f), mask, kTolerance);
+  EXPECT_EQ(r.verdict, ImageVerdict::Pass);
+  EXPECT_EQ(r.compared, 63u);
+  EXPECT_EQ(r.masked.at(pixelMaskName(PixelMask::Silhouette)), 1u);
+}
+
+TEST(ImageCompare, NanFails) {
+  Image observed = flat(0.5f);
+  observed.at(0, 7)[0] = std::nanf("");
+  EXPECT_EQ(compareImages("reference", observed, flat(0.5f), {}, kTolerance).verdict,
+            ImageVerdict::Fail);
+}
+
+TEST(ImageCompare, SizeMismatchFailsWithAReason) {
+  const ImageComparison r = compareImages("golden", flat(0.5f, 8), flat(0.5f, 4), {}, kTolerance);
+  EXPECT_EQ(r.verdict, ImageVerdict::Fail);
+  EXPECT_NE(r.problem.find("8x8"), std::string::npos);
+}
+
+TEST(ImageCompare, HeatMapIsWritten) {
+  const auto path = std::filesystem::temp_directory_path() / "snell-heat-test.png";
+  Image observed = flat(0.5f);
+  observed.at(1, 1)[0] = 0.6f;
+  writeDifferenceHeatMap(path, observed, flat(0.5f), {}, 0.004);
+  EXPECT_GT(std::filesystem::file_size(path), 0u);
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace snell
