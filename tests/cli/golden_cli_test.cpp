@@ -1,0 +1,133 @@
+// Goldens through the command a user runs: a changed golden fails, a damaged
+// one is a clear error and stays as it was, bless writes only what it ran
+// and never a wrong image.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "compare/image_io.h"
+#include "golden/golden_store.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kCase = "orange-book/14.1-fresnel/sphere";
+
+class GoldenCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / fmt::format("snell-golden-cli-{}", getpid());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_ / "shaders");
+    fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", dir_ / "shaders" / "fresnel");
+    fs::copy(SNELL_SOURCE_ROOT "/golden", dir_ / "golden", fs::copy_options::recursive);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  struct Outcome {
+    int code;
+    std::string output;
+    nlohmann::json result;  // the gl result of kCase, when there is one
+  };
+
+  Outcome snell(const std::string& command, const std::string& extra = "") {
+    const fs::path json = dir_ / "results.jsonl", log = dir_ / "log.txt";
+    const std::string line = fmt::format(
+        "{} {} --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} --json {} {} >{} 2>&1",
+        SNELL_BINARY, command, kCase, (dir_ / "shaders").string(), (dir_ / "golden").string(),
+        (dir_ / "out").string(), json.string(), extra, log.string());
+    const int status = std::system(line.c_str());
+    Outcome outcome{WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", {}};
+    std::ifstream logIn(log);
+    outcome.output.assign(std::istreambuf_iterator<char>(logIn), {});
+    std::ifstream in(json);
+    for (std::string text; std::getline(in, text);) outcome.result = nlohmann::json::parse(text);
+    return outcome;
+  }
+
+  fs::path goldenExr() const { return goldenFiles(dir_ / "golden", kCase, "gl").image; }
+
+  void nudgeOnePixel(float by) {
+    Image image = readImage(goldenExr());
+    // A pixel in the middle of the sphere, off every mask.
+    image.at(128, 128)[1] += by;
+    writeImageAtomically(goldenExr(), image);
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(GoldenCli, RepositoryGoldensPass) {
+  const Outcome o = snell("run");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_EQ(o.result["status"], "Pass") << o.output;
+}
+
+TEST_F(GoldenCli, OnePixelBeyondFailFails) {
+  nudgeOnePixel(0.005f);
+  const Outcome o = snell("run");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.result["status"], "Fail");
+  EXPECT_NE(o.output.find("image vs golden: fail"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("at (128, 128), 1 of"), std::string::npos) << o.output;
+}
+
+TEST_F(GoldenCli, OnePixelBetweenWarnAndFailIsAQualityWarning) {
+  nudgeOnePixel(0.003f);
+  const Outcome o = snell("run");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_EQ(o.result["status"], "QualityWarning") << o.output;
+}
+
+TEST_F(GoldenCli, TruncatedGoldenIsAClearErrorAndIsLeftAsItWas) {
+  fs::resize_file(goldenExr(), fs::file_size(goldenExr()) / 3);
+  std::ifstream before(goldenExr(), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(before)), {});
+  const Outcome o = snell("run");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_EQ(o.result["status"], "Fail");
+  EXPECT_NE(o.output.find(goldenExr().string()), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("snell bless"), std::string::npos) << o.output;
+  std::ifstream after(goldenExr(), std::ios::binary);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after)), {}), bytes);
+}
+
+TEST_F(GoldenCli, BlessRestoresAChangedGoldenAndSaysByHowMuch) {
+  nudgeOnePixel(0.005f);
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("blessed (changed: max error 0.005"), std::string::npos) << o.output;
+  EXPECT_EQ(snell("run").result["status"], "Pass");
+}
+
+TEST_F(GoldenCli, BlessTouchesOnlyTheCasesItRan) {
+  const fs::path other = goldenFiles(dir_ / "golden", "orange-book/14.3-chromatic/sphere", "gl").image;
+  const auto before = fs::last_write_time(other);
+  const auto vkBefore = fs::last_write_time(goldenFiles(dir_ / "golden", kCase, "vk").image);
+  EXPECT_EQ(snell("bless").code, 0);
+  EXPECT_EQ(fs::last_write_time(other), before);
+  EXPECT_EQ(fs::last_write_time(goldenFiles(dir_ / "golden", kCase, "vk").image), vkBefore);
+}
+
+TEST_F(GoldenCli, BlessRefusesAnImageThatIsOffTheReference) {
+  std::ifstream in(dir_ / "shaders" / "fresnel" / "fresnel.vert");
+  std::string source((std::istreambuf_iterator<char>(in)), {});
+  source.replace(source.find("Eta = 0.66"), 10, "Eta = 0.67");
+  std::ofstream(dir_ / "shaders" / "fresnel" / "fresnel.vert", std::ios::trunc) << source;
+  const auto before = fs::last_write_time(goldenExr());
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 1);
+  EXPECT_NE(o.output.find("not blessed"), std::string::npos) << o.output;
+  EXPECT_EQ(fs::last_write_time(goldenExr()), before);
+}
+
+}  // namespace
+}  // namespace snell
