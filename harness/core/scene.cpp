@@ -23,7 +23,13 @@ Mat4d environmentTransform() {
   return multiply(translation({0.15, -0.1, 0.2}), rotation({1.0, 2.0, 0.5}, 35.0 * kPi / 180));
 }
 
-void addCameraValues(Scene& scene, const Mat4d& modelview, const Mat4d& projection) {
+void addCameraValues(Scene& scene, const Mat4d& model, const Mat4d& view, const Vec3d& eye,
+                     const Mat4d& projection) {
+  const Mat4d modelview = multiply(view, model);
+  scene.values["model"] = toMat4Value(model);
+  scene.values["eye_position"] = Value{ValueType::Vec3, {static_cast<float>(eye[0]),
+                                                         static_cast<float>(eye[1]),
+                                                         static_cast<float>(eye[2])}};
   scene.values["modelview"] = toMat4Value(modelview);
   scene.values["modelview_projection"] = toMat4Value(multiply(projection, modelview));
   scene.values["normal_matrix"] = normalMatrixValue(modelview);
@@ -70,9 +76,9 @@ Scene sphere() {
   scene.environment = std::make_shared<const CubeMap>(makeEnvironment());
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
-  const Mat4d model = rotation({0.0, 1.0, 0.3}, 20.0 * kPi / 180);
-  const Mat4d view = lookAt({0.3, 0.5, 3.0}, {0, 0, 0}, {0, 1, 0});
-  addCameraValues(scene, multiply(view, model), perspective(45.0 * kPi / 180, 1.0, 0.5, 10.0));
+  const Vec3d eye = {0.3, 0.5, 3.0};
+  addCameraValues(scene, rotation({0.0, 1.0, 0.3}, 20.0 * kPi / 180), lookAt(eye, {0, 0, 0}, {0, 1, 0}),
+                  eye, perspective(45.0 * kPi / 180, 1.0, 0.5, 10.0));
   return scene;
 }
 
@@ -114,7 +120,8 @@ Scene sweep() {
   scene.vertexCount = kCount;
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
-  addCameraValues(scene, identity4(), perspective(60.0 * kPi / 180, 1.0, 0.5, 10.0));
+  addCameraValues(scene, identity4(), identity4(), {0, 0, 0},
+                  perspective(60.0 * kPi / 180, 1.0, 0.5, 10.0));
   return scene;
 }
 
