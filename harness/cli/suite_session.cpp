@@ -10,6 +10,7 @@
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/manifest_check.h"
+#include "core/scene_file.h"
 #include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 #include "runner/case_result_json.h"
@@ -28,8 +29,8 @@ namespace fs = std::filesystem;
 
 // Everything a case needs is read before any driver is loaded, so a broken
 // manifest or a missing stage file stops the run with exit 2 up front.
-void validateCases(const std::vector<Case>& cases) {
-  SceneCache scenes;
+void validateCases(const std::vector<Case>& cases, const std::string& shaders) {
+  SceneCache scenes(sceneSearchPath(shaders));
   for (const Case& c : cases) {
     const Manifest& m = *c.manifest;
     const ProgramSource program = loadProgram(m);
@@ -89,7 +90,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (run.cases.empty())
     throw UsageError(fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids",
                                  onlyImageCases ? "image " : "", options.filter));
-  validateCases(run.cases);
+  validateCases(run.cases, options.shaders);
 
   const std::vector<std::string> backends =
       options.backend == "all" ? std::vector<std::string>{"gl", "vk"}

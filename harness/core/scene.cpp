@@ -3,28 +3,32 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <set>
 
 #include "core/camera_math.h"
 #include "core/environment.h"
 #include "core/errors.h"
+#include "core/scene_file.h"
 
 namespace snell {
 namespace {
 
+namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
 
-// The environment is rotated and moved independently of the geometry, as the
-// Orange Book's application does: the translation makes the listing's
-// vec4(Refract, 1.0) matter.
-Mat4d environmentTransform() {
-  return multiply(translation({0.15, -0.1, 0.2}), rotation({1.0, 2.0, 0.5}, 35.0 * kPi / 180));
-}
+double radians(double degrees) { return degrees * kPi / 180; }
 
-void addCameraValues(Scene& scene, const Mat4d& model, const Mat4d& view, const Vec3d& eye,
-                     const Mat4d& projection) {
+void addCameraValues(Scene& scene, const SceneFile& file) {
+  const Mat4d model = rotation({file.modelAxis[0], file.modelAxis[1], file.modelAxis[2]},
+                               radians(file.modelDegrees));
+  const Vec3d eye = {file.eye[0], file.eye[1], file.eye[2]};
+  const Mat4d view = lookAt(eye, {file.center[0], file.center[1], file.center[2]},
+                            {file.up[0], file.up[1], file.up[2]});
+  const Mat4d projection = perspective(radians(file.fovyDegrees), 1.0, file.zNear, file.zFar);
   const Mat4d modelview = multiply(view, model);
   scene.values["model"] = toMat4Value(model);
   scene.values["eye_position"] = Value{ValueType::Vec3, {static_cast<float>(eye[0]),
@@ -33,107 +37,141 @@ void addCameraValues(Scene& scene, const Mat4d& model, const Mat4d& view, const 
   scene.values["modelview"] = toMat4Value(modelview);
   scene.values["modelview_projection"] = toMat4Value(multiply(projection, modelview));
   scene.values["normal_matrix"] = normalMatrixValue(modelview);
-  scene.values["texture_matrix"] = toMat4Value(environmentTransform());
+  const Mat4d environment = multiply(
+      translation({file.environmentTranslation[0], file.environmentTranslation[1],
+                   file.environmentTranslation[2]}),
+      rotation({file.environmentAxis[0], file.environmentAxis[1], file.environmentAxis[2]},
+               radians(file.environmentDegrees)));
+  scene.values["texture_matrix"] = toMat4Value(environment);
   scene.samplers = {"environment"};
 }
 
-// A unit sphere, tessellated by latitude and longitude, turned a little and
-// seen through a perspective camera: every incidence angle from normal to
-// grazing appears, and past the silhouette the back faces too.
-Scene sphere() {
-  Scene scene;
-  scene.name = "sphere";
-  scene.description = "unit sphere, 48 x 96 tessellation, perspective camera";
-  constexpr int kStacks = 48, kSlices = 96;
-  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
-  for (int stack = 0; stack <= kStacks; ++stack) {
-    const double theta = kPi * stack / kStacks;
-    for (int slice = 0; slice <= kSlices; ++slice) {
-      const double phi = 2 * kPi * slice / kSlices;
-      const double n[3] = {std::sin(theta) * std::cos(phi), std::cos(theta),
-                           std::sin(theta) * std::sin(phi)};
-      for (double c : n) position.data.push_back(static_cast<float>(c));
-      position.data.push_back(1.0f);
-      for (double c : n) normal.data.push_back(static_cast<float>(c));
-    }
-  }
-  scene.vertexCount = position.vertexCount();
-  // Counter-clockwise seen from outside; the degenerate triangles at the
-  // poles are left out.
-  const auto vertex = [](int stack, int slice) {
-    return static_cast<std::uint32_t>(stack * (kSlices + 1) + slice);
-  };
-  for (int stack = 0; stack < kStacks; ++stack)
-    for (int slice = 0; slice < kSlices; ++slice) {
-      if (stack > 0)
-        scene.indices.insert(scene.indices.end(), {vertex(stack, slice), vertex(stack, slice + 1),
-                                                   vertex(stack + 1, slice)});
-      if (stack + 1 < kStacks)
-        scene.indices.insert(scene.indices.end(), {vertex(stack, slice + 1),
-                                                   vertex(stack + 1, slice + 1),
-                                                   vertex(stack + 1, slice)});
-    }
-  scene.environment = std::make_shared<const CubeMap>(makeEnvironment());
-  scene.attributes["position"] = std::move(position);
-  scene.attributes["normal"] = std::move(normal);
-  const Vec3d eye = {0.3, 0.5, 3.0};
-  addCameraValues(scene, rotation({0.0, 1.0, 0.3}, 20.0 * kPi / 180), lookAt(eye, {0, 0, 0}, {0, 1, 0}),
-                  eye, perspective(45.0 * kPi / 180, 1.0, 0.5, 10.0));
-  return scene;
+void addVertex(AttributeStream& position, AttributeStream& normal, const Vec3d& p, const Vec3d& n) {
+  for (double c : p) position.data.push_back(static_cast<float>(c));
+  position.data.push_back(1.0f);
+  for (double c : n) normal.data.push_back(static_cast<float>(c));
 }
 
-// Incidence-angle sweep: each vertex is placed in front of the camera and
-// given a normal at a chosen angle to the view ray, with the samples dense
-// at normal incidence, at grazing incidence and just past it, where methods
-// fail first. Eye space equals model space, so the normal is used as given.
-Scene sweep() {
-  Scene scene;
-  scene.name = "sweep";
-  scene.description = "incidence angles 0 to 90 degrees and just past, dense at both ends";
-  constexpr int kCount = 4096;
-  std::mt19937_64 random(20261121);  // raw 64-bit output is the same on every platform
+// A (rows + 1) x (columns + 1) vertex grid wrapped onto a surface: two
+// counter-clockwise triangles per cell, degenerate ones (at a sphere's
+// poles) left out.
+void gridTriangles(Scene& scene, int rows, int columns, bool skipFirstRow, bool skipLastRow) {
+  const auto vertex = [&](int row, int column) {
+    return static_cast<std::uint32_t>(row * (columns + 1) + column);
+  };
+  for (int row = 0; row < rows; ++row)
+    for (int column = 0; column < columns; ++column) {
+      if (!(skipFirstRow && row == 0))
+        scene.indices.insert(scene.indices.end(), {vertex(row, column), vertex(row, column + 1),
+                                                   vertex(row + 1, column)});
+      if (!(skipLastRow && row + 1 == rows))
+        scene.indices.insert(scene.indices.end(), {vertex(row, column + 1),
+                                                   vertex(row + 1, column + 1),
+                                                   vertex(row + 1, column)});
+    }
+}
+
+void sphere(Scene& scene, const SceneFile& file) {
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
+  for (int stack = 0; stack <= file.stacks; ++stack) {
+    const double theta = kPi * stack / file.stacks;
+    for (int slice = 0; slice <= file.slices; ++slice) {
+      const double phi = 2 * kPi * slice / file.slices;
+      const Vec3d n = {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+      addVertex(position, normal, n, n);
+    }
+  }
+  gridTriangles(scene, file.stacks, file.slices, true, true);
+  scene.attributes["position"] = std::move(position);
+  scene.attributes["normal"] = std::move(normal);
+}
+
+void torus(Scene& scene, const SceneFile& file) {
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
+  for (int ring = 0; ring <= file.rings; ++ring) {
+    const double u = 2 * kPi * ring / file.rings;
+    for (int side = 0; side <= file.sides; ++side) {
+      // Rings run around the y axis, sides around the tube, in the order that
+      // makes the grid's triangles face outward (tests/core/scene_test.cpp).
+      const double v = 2 * kPi * side / file.sides;
+      const Vec3d n = {std::cos(v) * std::cos(u), std::sin(v), std::cos(v) * std::sin(u)};
+      const Vec3d p = {(file.majorRadius + file.minorRadius * std::cos(v)) * std::cos(u),
+                       file.minorRadius * std::sin(v),
+                       (file.majorRadius + file.minorRadius * std::cos(v)) * std::sin(u)};
+      addVertex(position, normal, p, n);
+    }
+  }
+  gridTriangles(scene, file.rings, file.sides, false, false);
+  scene.attributes["position"] = std::move(position);
+  scene.attributes["normal"] = std::move(normal);
+}
+
+void sweep(Scene& scene, const SceneFile& file) {
+  std::mt19937_64 random(static_cast<std::uint64_t>(file.seed));  // raw output: the same everywhere
   auto uniform = [&] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
   AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
-  for (int k = 0; k < kCount; ++k) {
-    const double t = static_cast<double>(k) / (kCount - 1);
+  const int count = file.count;
+  for (int k = 0; k < count; ++k) {
+    const double t = count > 1 ? static_cast<double>(k) / (count - 1) : 0.0;
     double angle;  // incidence angle in degrees
-    if (k < kCount / 2) angle = 90.0 * (2 * t);                          // uniform 0..90
-    else if (k < 3 * kCount / 4) angle = 90.0 * (1 - std::pow(10.0, -1 - 6 * (4 * t - 2)));  // to grazing
-    else angle = 90.0 + 10.0 * std::pow(10.0, -5 * (4 * t - 3));          // just past grazing
+    if (k < count / 2) angle = 90.0 * (2 * t);                                         // 0..90
+    else if (k < 3 * count / 4) angle = 90.0 * (1 - std::pow(10.0, -1 - 6 * (4 * t - 2)));  // to grazing
+    else angle = 90.0 + 10.0 * std::pow(10.0, -5 * (4 * t - 3));                        // just past
     // View direction within 30 degrees of -z, at a distance of 2 to 6.
-    const double polar = 30.0 * kPi / 180 * std::sqrt(uniform()), azimuth = 2 * kPi * uniform();
+    const double polar = radians(30.0) * std::sqrt(uniform()), azimuth = 2 * kPi * uniform();
     const Vec3d d = {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
                      -std::cos(polar)};
     const double distance = 2 + 4 * uniform();
     // The normal is -d turned by `angle` about an axis perpendicular to d.
     const Vec3d helper = std::abs(d[0]) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
     const Vec3d u = normalized(cross(d, helper)), w = cross(d, u);
-    const double spin = 2 * kPi * uniform();
-    const double a = angle * kPi / 180;
+    const double spin = 2 * kPi * uniform(), a = radians(angle);
     Vec3d n;
     for (int c = 0; c < 3; ++c)
       n[c] = -d[c] * std::cos(a) + (u[c] * std::cos(spin) + w[c] * std::sin(spin)) * std::sin(a);
-    for (int c = 0; c < 3; ++c) position.data.push_back(static_cast<float>(distance * d[c]));
-    position.data.push_back(1.0f);
-    for (int c = 0; c < 3; ++c) normal.data.push_back(static_cast<float>(n[c]));
+    addVertex(position, normal, {distance * d[0], distance * d[1], distance * d[2]}, n);
   }
-  scene.vertexCount = kCount;
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
-  addCameraValues(scene, identity4(), identity4(), {0, 0, 0},
-                  perspective(60.0 * kPi / 180, 1.0, 0.5, 10.0));
+}
+
+Scene build(const SceneFile& file) {
+  Scene scene;
+  scene.name = file.name;
+  scene.description = file.description;
+  if (file.shape == "sphere") sphere(scene, file);
+  else if (file.shape == "torus") torus(scene, file);
+  else sweep(scene, file);
+  scene.vertexCount = scene.attributes.at("position").vertexCount();
+  addCameraValues(scene, file);
+  if (!scene.indices.empty()) {
+    scene.width = file.width;
+    scene.height = file.height;
+    scene.environment = std::make_shared<const CubeMap>(makeEnvironment(file.environmentSize));
+  }
   return scene;
 }
 
 }  // namespace
 
-std::vector<std::string> sceneNames() { return {"sphere", "sweep"}; }
-
-Scene makeScene(const std::string& name) {
-  if (name == "sphere") return sphere();
-  if (name == "sweep") return sweep();
-  throw UsageError(fmt::format("unknown scene `{}`; known scenes: {}", name,
-                               fmt::join(sceneNames(), ", ")));
+std::vector<std::string> sceneNames(const std::vector<fs::path>& searchPath) {
+  std::set<std::string> names;
+  for (const fs::path& dir : searchPath)
+    if (fs::is_directory(dir))
+      for (const auto& entry : fs::directory_iterator(dir))
+        if (entry.path().extension() == ".toml") names.insert(entry.path().stem().string());
+  return {names.begin(), names.end()};
 }
+
+Scene makeScene(const std::string& name, const std::vector<fs::path>& searchPath) {
+  for (const fs::path& dir : searchPath) {
+    const fs::path file = dir / (name + ".toml");
+    if (fs::is_regular_file(file)) return build(loadSceneFile(file));
+  }
+  throw UsageError(fmt::format("unknown scene `{}`; known scenes: {}", name,
+                               fmt::join(sceneNames(searchPath), ", ")));
+}
+
+Scene makeScene(const std::string& name) { return makeScene(name, {builtInScenesDir()}); }
 
 }  // namespace snell

@@ -1,7 +1,9 @@
 #pragma once
 // Scenes provide the values that manifests bind by semantic ("scene.normal"),
 // as Shadertoy provides iResolution. Oracle and backends get the same floats.
+// Each scene is described as data in scenes/<name>.toml (core/scene_file.h).
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,21 +16,27 @@ namespace snell {
 struct Scene {
   std::string name;
   std::string description;
-  UniformMap values;          // "modelview", "modelview_projection", "normal_matrix", ...
+  UniformMap values;          // "model", "modelview", "modelview_projection", "normal_matrix", ...
   AttributeMap attributes;    // "position" (vec4), "normal" (vec3)
   std::vector<std::string> samplers;  // semantics bound to textures ("environment")
   std::size_t vertexCount = 0;
   // Scenes that draw: a triangle list (counter-clockwise front faces), the
   // image size, and the environment bound to `samplers`.
   std::vector<std::uint32_t> indices;
-  int width = 256;
-  int height = 256;
+  int width = 0;
+  int height = 0;
   std::shared_ptr<const CubeMap> environment;
   bool draws() const { return !indices.empty(); }
 };
 
-std::vector<std::string> sceneNames();
-// Throws UsageError naming the known scenes.
+// The scene names found on the search path (file names without .toml).
+std::vector<std::string> sceneNames(const std::vector<std::filesystem::path>& searchPath);
+
+// The first scenes/<name>.toml on the search path, built; throws UsageError
+// naming the known scenes when there is none, or the file and line of a
+// broken one.
+Scene makeScene(const std::string& name, const std::vector<std::filesystem::path>& searchPath);
+// The repository's own scenes.
 Scene makeScene(const std::string& name);
 
 }  // namespace snell

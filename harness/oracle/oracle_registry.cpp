@@ -8,6 +8,8 @@
 #include <array>
 
 #include "core/errors.h"
+#include "oracle/listings/cg_refraction.h"
+#include "oracle/listings/cg_refraction_builtin.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_chromatic_fragment.h"
 #include "oracle/listings/orange_book_fresnel.h"
@@ -27,6 +29,8 @@ struct RegisteredOracle {
 constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookFresnelName, &listings::makeOrangeBookFresnelOracle},
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
+    RegisteredOracle{listings::kCgRefractionName, &listings::makeCgRefractionOracle},
+    RegisteredOracle{listings::kCgRefractionBuiltinName, &listings::makeCgRefractionBuiltinOracle},
 };
 
 struct RegisteredFragmentOracle {

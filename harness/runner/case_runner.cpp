@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "core/errors.h"
+#include "core/scene_file.h"
 
 namespace snell {
 namespace {
@@ -31,9 +32,11 @@ std::string describeFailures(const std::vector<VaryingCheck>& checks) {
 
 }  // namespace
 
+SceneCache::SceneCache() : searchPath_{builtInScenesDir()} {}
+
 const Scene& SceneCache::get(const std::string& name) {
   auto it = scenes_.find(name);
-  if (it == scenes_.end()) it = scenes_.emplace(name, makeScene(name)).first;
+  if (it == scenes_.end()) it = scenes_.emplace(name, makeScene(name, searchPath_)).first;
   return it->second;
 }
 

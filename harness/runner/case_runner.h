@@ -2,6 +2,7 @@
 // Runs one case on one backend: bind the scene's values, capture the
 // listing's outputs, hold them against the oracle. The oracle's answer does
 // not depend on the backend, so it is computed once per case and shared.
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <string>
@@ -28,9 +29,14 @@ class OracleCache {
 
 class SceneCache {
  public:
+  // The repository's scenes, or those on `searchPath` (core/scene_file.h).
+  SceneCache();
+  explicit SceneCache(std::vector<std::filesystem::path> searchPath)
+      : searchPath_(std::move(searchPath)) {}
   const Scene& get(const std::string& name);
 
  private:
+  std::vector<std::filesystem::path> searchPath_;
   std::map<std::string, Scene> scenes_;
 };
 

@@ -9,6 +9,7 @@
 #include "backends/backend.h"
 #include "core/case.h"
 #include "core/errors.h"
+#include "core/scene_file.h"
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
 
@@ -22,7 +23,7 @@ int runWorker(const WorkerOptions& options) {
 
   std::unique_ptr<Backend> backend;  // loaded on the first case, not before
   OracleCache oracles;
-  SceneCache scenes;
+  SceneCache scenes(sceneSearchPath(options.shaders));
   ReferenceCache references;
   std::unique_ptr<CaseRunner> runner;
   for (std::string id; std::getline(std::cin, id);) {

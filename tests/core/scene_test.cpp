@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "core/errors.h"
 
@@ -60,6 +62,54 @@ TEST(Scene, SweepCoversNormalToGrazingAndPast) {
 TEST(Scene, SameFloatsEveryTime) {
   EXPECT_EQ(makeScene("sweep").attributes.at("normal").data,
             makeScene("sweep").attributes.at("normal").data);
+}
+
+// Every triangle of a drawing scene is counter-clockwise seen from outside:
+// its geometric normal agrees with the vertex normals.
+TEST(Scene, DrawingScenesFaceOutward) {
+  for (const char* name : {"sphere", "torus"}) {
+    const Scene s = makeScene(name);
+    ASSERT_TRUE(s.draws()) << name;
+    ASSERT_EQ(s.indices.size() % 3, 0u);
+    const auto& p = s.attributes.at("position").data;
+    const auto& n = s.attributes.at("normal").data;
+    std::size_t inward = 0;
+    for (std::size_t k = 0; k < s.indices.size(); k += 3) {
+      const std::uint32_t a = s.indices[k], b = s.indices[k + 1], c = s.indices[k + 2];
+      double e1[3], e2[3];
+      for (int i = 0; i < 3; ++i) {
+        e1[i] = double(p[b * 4 + i]) - p[a * 4 + i];
+        e2[i] = double(p[c * 4 + i]) - p[a * 4 + i];
+      }
+      const double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                           e1[0] * e2[1] - e1[1] * e2[0]};
+      const double along = g[0] * n[a * 3] + g[1] * n[a * 3 + 1] + g[2] * n[a * 3 + 2];
+      inward += along <= 0;
+    }
+    EXPECT_EQ(inward, 0u) << name;
+  }
+}
+
+TEST(Scene, ScenesAreReadFromData) {
+  const Scene torus = makeScene("torus");
+  EXPECT_EQ(torus.width, 256);
+  EXPECT_EQ(torus.vertexCount, 65u * 33u);
+  EXPECT_FALSE(makeScene("sweep").draws());
+}
+
+TEST(Scene, BrokenSceneFileNamesFileAndLine) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "snell-scene-test";
+  fs::create_directories(dir);
+  std::ofstream(dir / "bad.toml") << "[geometry]\nshape = \"cube\"\n[camera]\n";
+  try {
+    makeScene("bad", {dir});
+    FAIL();
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("bad.toml:2: unknown shape `cube`"), std::string::npos)
+        << error.what();
+  }
+  fs::remove_all(dir);
 }
 
 TEST(Scene, UnknownSceneListsKnownOnes) {
