@@ -7,6 +7,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace {
@@ -30,6 +31,14 @@ std::string readAll(const fs::path& path) {
   return text.str();
 }
 
+// Every file below `dir` with its contents: nothing may change them.
+std::map<std::string, std::string> snapshot(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) files[entry.path().string()] = readAll(entry.path());
+  return files;
+}
+
 class Malformed : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Malformed, ClearMessageAndExitCodeAndNothingLost) {
@@ -44,9 +53,14 @@ TEST_P(Malformed, ClearMessageAndExitCodeAndNothingLost) {
   const fs::path results = fs::temp_directory_path() / fmt::format("snell-malformed-{}.jsonl", getpid());
   std::ofstream(results) << "previous results\n";
   const fs::path errors = fs::temp_directory_path() / fmt::format("snell-malformed-{}.err", getpid());
-  const std::string command =
-      fmt::format("{} run --backend gl -j 1 --shaders {} --json {} >/dev/null 2>{}", SNELL_BINARY,
-                  dir.string(), results.string(), errors.string());
+  // A folder with its own golden/ tests damaged goldens; the others use the
+  // repository's.
+  const fs::path golden = fs::exists(dir / "golden") ? dir / "golden" : fs::path(SNELL_SOURCE_ROOT "/golden");
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-malformed-out-{}", getpid());
+  const std::string command = fmt::format(
+      "{} run --backend gl -j 1 --shaders {} --golden {} --out {} --json {} >/dev/null 2>{}",
+      SNELL_BINARY, dir.string(), golden.string(), out.string(), results.string(), errors.string());
+  const auto goldenBefore = snapshot(golden);
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), expectedCode);
@@ -63,6 +77,8 @@ TEST_P(Malformed, ClearMessageAndExitCodeAndNothingLost) {
     EXPECT_NE(readAll(results).find(expectedText), std::string::npos) << readAll(results);
   }
   EXPECT_EQ(stderrText.find("terminate called"), std::string::npos) << stderrText;
+  EXPECT_EQ(snapshot(golden), goldenBefore) << "a golden changed";
+  fs::remove_all(out);
   fs::remove(results);
   fs::remove(errors);
 }

@@ -95,17 +95,22 @@ TEST(OracleCgRefraction, MatchesTheTutorialsFormulaOnBothScenes) {
         const Expected e = expectedAt(bound, v, eta);
         if (std::fabs(e.cosT2) < 1e-9) continue;  // double rounding may flip the branch
         zero += e.cosT2 < 0.0;
-        for (int k = 0; k < 3; ++k) {
+        for (int k = 0; k < 3; ++k)
           ASSERT_NEAR(T.reference[3 * v + k], e.T[k], 1e-12 * e.length)
               << sceneName << " eta " << eta << " vertex " << v;
+        // Near cosT2 = 0 the square root magnifies fp32 rounding without bound.
+        if (std::fabs(e.cosT2) < 1e-2) continue;
+        for (int k = 0; k < 3; ++k)
           ASSERT_NEAR(T.strict[3 * v + k], e.T[k], 2e-6 * e.length)
               << sceneName << " eta " << eta << " vertex " << v;
-        }
       }
-      // Air to glass never reflects; glass to air does on the sweep, and on
-      // the sphere only past its silhouette.
-      if (eta == kAirToGlass) EXPECT_EQ(zero, 0) << sceneName;
-      if (eta == kGlassToAir && std::string(sceneName) == "sweep") EXPECT_GT(zero, 300);
+      // Air to glass is never totally reflected; glass to air is, wherever
+      // (|I| cos(theta))^2 < 1 - 1 / etaRatio^2.
+      if (eta == kAirToGlass) {
+        EXPECT_EQ(zero, 0) << sceneName;
+      } else {
+        EXPECT_GT(zero, 100) << sceneName;
+      }
     }
   }
 }
@@ -122,13 +127,20 @@ TEST(OracleCgRefraction, IntervalsHoldTheDoubleAndFloatResultsOnBothScenes) {
           ASSERT_LE(T.reference[k], T.hi[k]) << oracle << " " << sceneName << " " << k;
           ASSERT_LE(T.lo[k], T.strict[k]) << oracle << " " << sceneName << " " << k;
           ASSERT_LE(T.strict[k], T.hi[k]) << oracle << " " << sceneName << " " << k;
-          if (T.lo[k] <= 0.0 && T.hi[k] >= 0.0 && T.hi[k] - T.lo[k] > 1e-3) ++either;
-          else EXPECT_LT(T.hi[k] - T.lo[k], 1e-4 * 8) << oracle << " " << sceneName << " " << k;
+          // A union of T and zero where cosT2 may round either way; elsewhere
+          // tight: under a ten-thousandth of |I|, which is at most 6 here.
+          if (T.lo[k] <= 0.0 && T.hi[k] >= 0.0 && T.hi[k] - T.lo[k] > 1e-3) {
+            ++either;
+          } else {
+            EXPECT_LT(T.hi[k] - T.lo[k], 6e-4) << oracle << " " << sceneName << " " << k;
+          }
         }
-        // Only glass to air comes near cosT2 = 0, and only on the sweep.
-        if (eta == kAirToGlass) EXPECT_EQ(either, 0) << oracle << " " << sceneName;
-        if (eta == kGlassToAir && std::string(sceneName) == "sweep")
-          EXPECT_GT(either, 0) << oracle;
+        // Only glass to air comes near cosT2 = 0.
+        if (eta == kAirToGlass) {
+          EXPECT_EQ(either, 0) << oracle << " " << sceneName;
+        } else {
+          EXPECT_GT(either, 0) << oracle << " " << sceneName;
+        }
       }
     }
   }
