@@ -1,4 +1,7 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <set>
 
 #include "cli/commands.h"
 #include "core/case.h"
@@ -19,12 +22,15 @@ Command addListCommand(CLI::App& app) {
     const std::vector<Case> cases = expandCases(manifests, options->filter);
     std::size_t width = 4;
     for (const Case& c : cases) width = std::max(width, c.id.size());
-    fmt::print("{:<{}}  {:<6}  {:<8}  {:<20}  {}\n", "case", width, "backends", "expected",
-               "oracle", "source");
+    fmt::print("{:<{}}  {:<8}  {:<8}  {:<13}  {:<22}  {}\n", "case", width, "backends", "expected",
+               "checks", "oracle", "source");
     for (const Case& c : cases)
-      fmt::print("{:<{}}  {:<8}  {:<8}  {:<20}  {} ({})\n", c.id, width, "gl,vk", "Pass",
-                 c.manifest->oracle, c.manifest->source.file, c.manifest->source.where);
-    fmt::print("{} cases from {} listings\n", cases.size(), manifests.size());
+      fmt::print("{:<{}}  {:<8}  {:<8}  {:<13}  {:<22}  {} ({})\n", c.id, width, "gl,vk", "Pass",
+                 fmt::format("{}", fmt::join(c.spec.checks, ",")), c.manifest->oracle,
+                 c.manifest->source.file, c.manifest->source.where);
+    std::set<const Manifest*> listings;
+    for (const Case& c : cases) listings.insert(c.manifest);
+    fmt::print("{} cases from {} listings\n", cases.size(), listings.size());
     return 0;
   };
 }
