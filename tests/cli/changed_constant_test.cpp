@@ -79,5 +79,10 @@ TEST(ChangedConstant, ChromaticEtaREditedFailsOnBothBackends) {
                                   "const float EtaR = 0.65;", "const float EtaR = 0.66;"));
 }
 
+TEST(ChangedConstant, CgRefractConstantEditedFailsOnBothBackends) {
+  expectEveryCaseFails(editedCopy("cg-tutorial/c7e3v-refraction", "c7e3v_refraction.vert",
+                                  "float cosT2 = 1.0f", "float cosT2 = 1.01f"));
+}
+
 }  // namespace
 }  // namespace snell

@@ -21,6 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+constexpr std::size_t kFresnelCases = 3;  // sphere, sweep, torus
+
 // The published Listing 14.1 beside the endless-loop fault.
 fs::path shadersWithFault() {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-isolation-{}", getpid());
@@ -89,13 +91,10 @@ TEST(Isolation, EndlessListingTimesOutOnBothBackendsAndOthersPass) {
                                 json.string()});
   EXPECT_EQ(exitCode(pid), 1);
   const auto results = resultsByKey(json);
-  ASSERT_EQ(results.size(), 6u);
-  for (const char* backend : {"gl", "vk"}) {
-    const std::string b = backend;
-    EXPECT_EQ(results.at(b + " faults/endless-loop/sweep")["status"], "Timeout");
-    EXPECT_EQ(results.at(b + " orange-book/14.1-fresnel/sphere")["status"], "Pass");
-    EXPECT_EQ(results.at(b + " orange-book/14.1-fresnel/sweep")["status"], "Pass");
-  }
+  ASSERT_EQ(results.size(), 2u * (1 + kFresnelCases));
+  for (const auto& [key, result] : results)
+    EXPECT_EQ(result["status"], key.find("faults/endless-loop") != std::string::npos ? "Timeout" : "Pass")
+        << key;
   fs::remove_all(shaders);
 }
 
@@ -116,12 +115,14 @@ TEST(Isolation, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
   kill(workers[0], SIGKILL);
   EXPECT_EQ(exitCode(pid), 1);
   const auto results = resultsByKey(json);
-  ASSERT_EQ(results.size(), 3u);
+  ASSERT_EQ(results.size(), 1 + kFresnelCases);
   const auto& killed = results.at("gl faults/endless-loop/sweep");
   EXPECT_EQ(killed["status"], "Crash");
   EXPECT_NE(killed["message"].get<std::string>().find("signal 9"), std::string::npos) << killed;
-  EXPECT_EQ(results.at("gl orange-book/14.1-fresnel/sphere")["status"], "Pass");
-  EXPECT_EQ(results.at("gl orange-book/14.1-fresnel/sweep")["status"], "Pass");
+  for (const auto& [key, result] : results)
+    if (key.find("orange-book/14.1-fresnel") != std::string::npos) {
+      EXPECT_EQ(result["status"], "Pass") << key;
+    }
   fs::remove_all(shaders);
 }
 
