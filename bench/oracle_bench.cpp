@@ -1,0 +1,52 @@
+// What the oracle costs per case: Listing 14.1's vertex oracle (double,
+// float and fp32 intervals together) over the sphere scene, and the CPU
+// reference image of the same scene.
+// Run: build/bench/snell_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
+#include <benchmark/benchmark.h>
+
+#include "core/scene.h"
+#include "oracle/reference/reference_image.h"
+#include "oracle/vertex_oracle.h"
+
+namespace snell {
+namespace {
+
+// The uniforms Listing 14.1 binds, by its GLSL names, from the scene.
+struct FresnelInputs {
+  Scene scene = makeScene("sphere");
+  UniformMap uniforms{{"MVMatrix", scene.values.at("modelview")},
+                      {"MVPMatrix", scene.values.at("modelview_projection")},
+                      {"NormalMatrix", scene.values.at("normal_matrix")},
+                      {"TextureMatrix", scene.values.at("texture_matrix")}};
+  AttributeMap attributes;
+  ConstantMap constants{{"Eta", 0.66}, {"FresnelPower", 5.0}};
+  FresnelInputs() {
+    attributes["MCvertex"] = scene.attributes.at("position");
+    attributes["MCnormal"] = scene.attributes.at("normal");
+  }
+};
+
+void vertexOracleOnSphere(benchmark::State& state) {
+  const FresnelInputs in;
+  const auto oracle = makeVertexOracle("orange_book_fresnel");
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        oracle->evaluate({in.uniforms, in.constants, in.attributes, in.scene.vertexCount}));
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.scene.vertexCount));
+}
+BENCHMARK(vertexOracleOnSphere)->Unit(benchmark::kMillisecond);
+
+void referenceImageOfSphere(benchmark::State& state) {
+  const FresnelInputs in;
+  for (auto _ : state) {
+    ReferenceInput input{"orange_book_fresnel", in.uniforms, in.constants, in.attributes,
+                         in.scene.vertexCount, in.scene.indices,
+                         {{"Cubemap", in.scene.environment.get()}}, in.scene.width, in.scene.height};
+    benchmark::DoNotOptimize(renderReferenceImage(input));
+  }
+  state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);
+}
+BENCHMARK(referenceImageOfSphere)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace snell
