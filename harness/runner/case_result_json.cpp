@@ -1,6 +1,7 @@
 #include "runner/case_result_json.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace snell {
@@ -11,6 +12,25 @@ nlohmann::json number(double x) { return std::isfinite(x) ? nlohmann::json(x) : 
 
 double numberOr(const nlohmann::json& x, double infinite) {
   return x.is_null() ? infinite : x.get<double>();
+}
+
+// nlohmann's get<std::size_t>() on 1e20 or -2.5 is a float-to-integer cast
+// with undefined behaviour; a record from a worker or a file is checked first.
+template <class Integer>
+Integer count(const nlohmann::json& x) {
+  if (!x.is_number_integer() && !x.is_number_unsigned())
+    throw nlohmann::json::type_error::create(302, "expected an integer, got " + x.dump(), &x);
+  if (x.is_number_unsigned()) {
+    const auto value = x.get<std::uint64_t>();
+    if (value > static_cast<std::uint64_t>(std::numeric_limits<Integer>::max()))
+      throw nlohmann::json::type_error::create(302, "integer out of range: " + x.dump(), &x);
+    return static_cast<Integer>(value);
+  }
+  const auto value = x.get<std::int64_t>();
+  if (value < static_cast<std::int64_t>(std::numeric_limits<Integer>::min()) ||
+      (value > 0 && static_cast<std::uint64_t>(value) > static_cast<std::uint64_t>(std::numeric_limits<Integer>::max())))
+    throw nlohmann::json::type_error::create(302, "integer out of range: " + x.dump(), &x);
+  return static_cast<Integer>(value);
 }
 
 Status statusFromName(const std::string& name) {
@@ -44,12 +64,15 @@ ImageComparison imageFromJson(const nlohmann::json& j) {
   c.meanError = numberOr(j.at("mean_error"), kInf);
   c.rmsError = numberOr(j.at("rms_error"), kInf);
   c.psnr = numberOr(j.at("psnr"), kInf);
-  c.maxX = j.at("max_x").get<int>();
-  c.maxY = j.at("max_y").get<int>();
-  c.compared = j.at("compared").get<std::size_t>();
-  c.failed = j.at("failed").get<std::size_t>();
-  c.warned = j.at("warned").get<std::size_t>();
-  c.masked = j.at("masked").get<std::map<std::string, std::size_t>>();
+  c.maxX = count<int>(j.at("max_x"));
+  c.maxY = count<int>(j.at("max_y"));
+  c.compared = count<std::size_t>(j.at("compared"));
+  c.failed = count<std::size_t>(j.at("failed"));
+  c.warned = count<std::size_t>(j.at("warned"));
+  const nlohmann::json& masked = j.at("masked");
+  if (!masked.is_object())
+    throw nlohmann::json::type_error::create(302, "masked must be an object", &masked);
+  for (const auto& [reason, n] : masked.items()) c.masked[reason] = count<std::size_t>(n);
   c.problem = j.at("problem").get<std::string>();
   return c;
 }
@@ -113,18 +136,18 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   r.driver = {d.at("api").get<std::string>(), d.at("api_version").get<std::string>(),
               d.at("renderer").get<std::string>(), d.at("driver_version").get<std::string>(),
               d.at("device_type").get<std::string>()};
-  r.vertices = j.at("vertices").get<std::size_t>();
+  r.vertices = count<std::size_t>(j.at("vertices"));
   for (const nlohmann::json& v : j.at("varyings")) {
     VaryingCheck check;
     check.name = v.at("name").get<std::string>();
-    check.checked = v.at("checked").get<std::size_t>();
-    check.undefined = v.at("undefined").get<std::size_t>();
-    check.failed = v.at("failed").get<std::size_t>();
+    check.checked = count<std::size_t>(v.at("checked"));
+    check.undefined = count<std::size_t>(v.at("undefined"));
+    check.failed = count<std::size_t>(v.at("failed"));
     check.worstSlack = numberOr(v.at("worst_slack"), kInf);
-    check.worstVertex = v.at("worst_vertex").get<std::size_t>();
+    check.worstVertex = count<std::size_t>(v.at("worst_vertex"));
     for (const nlohmann::json& f : v.at("first_failures"))
       check.firstFailures.push_back(
-          {f.at("vertex").get<std::size_t>(), f.at("component").get<int>(),
+          {count<std::size_t>(f.at("vertex")), count<int>(f.at("component")),
            static_cast<float>(numberOr(f.at("observed"), std::nan(""))), f.at("reference").get<double>(),
            f.at("lo").get<double>(), f.at("hi").get<double>(), numberOr(f.at("slack"), kInf)});
     r.varyings.push_back(std::move(check));

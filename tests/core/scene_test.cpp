@@ -36,7 +36,8 @@ TEST(Scene, SphereHasThousandsOfUnitNormals) {
 }
 
 TEST(Scene, TextureMatrixRotatesAndTranslates) {
-  const Value& m = makeScene("sphere").values.at("texture_matrix");
+  const Scene scene = makeScene("sphere");
+  const Value& m = scene.values.at("texture_matrix");
   ASSERT_EQ(m.type, ValueType::Mat4);
   EXPECT_NE(m.data[12], 0.0f);  // translation column is used by vec4(Refract, 1.0)
   EXPECT_NE(m.data[1], 0.0f);   // not diagonal: a rotation

@@ -46,5 +46,16 @@ TEST(CaseResultJson, MalformedRecordThrows) {
   EXPECT_THROW(caseResultFromJson(j), nlohmann::json::exception);
 }
 
+TEST(CaseResultJson, CountsOutOfRangeOrFractionalThrowInsteadOfCasting) {
+  for (const char* bad : {"1e20", "-2.5", "18446744073709551616", "-1", "\"7\""}) {
+    nlohmann::json j = toJson(CaseResult{});
+    j["vertices"] = nlohmann::json::parse(bad);
+    EXPECT_THROW(caseResultFromJson(j), nlohmann::json::exception) << bad;
+  }
+  nlohmann::json ok = toJson(CaseResult{});
+  ok["vertices"] = 4753;
+  EXPECT_EQ(caseResultFromJson(ok).vertices, 4753u);
+}
+
 }  // namespace
 }  // namespace snell
