@@ -52,6 +52,11 @@ void addVertex(AttributeStream& position, AttributeStream& normal, const Vec3d& 
   for (double c : n) normal.data.push_back(static_cast<float>(c));
 }
 
+// The per-vertex tangent: a unit vector perpendicular to the normal.
+void addTangent(AttributeStream& tangent, const Vec3d& t) {
+  for (double c : t) tangent.data.push_back(static_cast<float>(c));
+}
+
 // A (rows + 1) x (columns + 1) vertex grid wrapped onto a surface: two
 // counter-clockwise triangles per cell, degenerate ones (at a sphere's
 // poles) left out.
@@ -72,22 +77,25 @@ void gridTriangles(Scene& scene, int rows, int columns, bool skipFirstRow, bool 
 }
 
 void sphere(Scene& scene, const SceneFile& file) {
-  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
   for (int stack = 0; stack <= file.stacks; ++stack) {
     const double theta = kPi * stack / file.stacks;
     for (int slice = 0; slice <= file.slices; ++slice) {
       const double phi = 2 * kPi * slice / file.slices;
       const Vec3d n = {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
       addVertex(position, normal, n, n);
+      // d/dphi, normalised: along the parallel, defined at the poles too.
+      addTangent(tangent, {-std::sin(phi), 0.0, std::cos(phi)});
     }
   }
   gridTriangles(scene, file.stacks, file.slices, true, true);
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
+  scene.attributes["tangent"] = std::move(tangent);
 }
 
 void torus(Scene& scene, const SceneFile& file) {
-  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
   for (int ring = 0; ring <= file.rings; ++ring) {
     const double u = 2 * kPi * ring / file.rings;
     for (int side = 0; side <= file.sides; ++side) {
@@ -99,17 +107,20 @@ void torus(Scene& scene, const SceneFile& file) {
                        file.minorRadius * std::sin(v),
                        (file.majorRadius + file.minorRadius * std::cos(v)) * std::sin(u)};
       addVertex(position, normal, p, n);
+      // Along the ring (d/du, normalised), perpendicular to n.
+      addTangent(tangent, {-std::sin(u), 0.0, std::cos(u)});
     }
   }
   gridTriangles(scene, file.rings, file.sides, false, false);
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
+  scene.attributes["tangent"] = std::move(tangent);
 }
 
 void sweep(Scene& scene, const SceneFile& file) {
   std::mt19937_64 random(static_cast<std::uint64_t>(file.seed));  // raw output: the same everywhere
   auto uniform = [&] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
-  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}};
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
   const int count = file.count;
   for (int k = 0; k < count; ++k) {
     const double t = count > 1 ? static_cast<double>(k) / (count - 1) : 0.0;
@@ -130,9 +141,14 @@ void sweep(Scene& scene, const SceneFile& file) {
     for (int c = 0; c < 3; ++c)
       n[c] = -d[c] * std::cos(a) + (u[c] * std::cos(spin) + w[c] * std::sin(spin)) * std::sin(a);
     addVertex(position, normal, {distance * d[0], distance * d[1], distance * d[2]}, n);
+    // Any unit vector perpendicular to n (no random draw: the sweep's
+    // samples stay as they were).
+    const Vec3d away = std::abs(n[0]) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    addTangent(tangent, normalized(cross(n, away)));
   }
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
+  scene.attributes["tangent"] = std::move(tangent);
 }
 
 Scene build(const SceneFile& file) {

@@ -41,6 +41,11 @@ Interval exp2(const Interval& x) {
   return withinUlps(below(std::exp2(x.lo)), above(std::exp2(x.hi)), 3.0 + 2.0 * magnitude(x));
 }
 
+Interval exp(const Interval& x) {
+  if (x.undefined) return Interval::unconstrained();
+  return withinUlps(below(std::exp(x.lo)), above(std::exp(x.hi)), 3.0 + 2.0 * magnitude(x));
+}
+
 Interval log2(const Interval& x) {
   if (x.undefined || x.lo <= 0.0) return Interval::unconstrained();
   // The rule changes at 0.5 and 2: bound each part by its own rule.

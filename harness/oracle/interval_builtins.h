@@ -16,6 +16,8 @@ Interval inversesqrt(const Interval& x);
 Interval sqrt(const Interval& x);
 // 3 + 2|x| ULP.
 Interval exp2(const Interval& x);
+// 3 + 2|x| ULP.
+Interval exp(const Interval& x);
 // 3 ULP outside [0.5, 2], absolute 2^-21 inside; undefined for x <= 0.
 Interval log2(const Interval& x);
 // Inherited from exp2(y * log2(x)); undefined for x < 0, and for x = 0 with

@@ -12,6 +12,8 @@
 #include "oracle/listings/cg_refraction_builtin.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_chromatic_fragment.h"
+#include "oracle/listings/orange_book_diffraction.h"
+#include "oracle/listings/orange_book_diffraction_fragment.h"
 #include "oracle/listings/orange_book_fresnel.h"
 #include "oracle/listings/orange_book_fresnel_fragment.h"
 #include "oracle/reference/fragment_oracle.h"
@@ -31,6 +33,8 @@ constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
     RegisteredOracle{listings::kCgRefractionName, &listings::makeCgRefractionOracle},
     RegisteredOracle{listings::kCgRefractionBuiltinName, &listings::makeCgRefractionBuiltinOracle},
+    RegisteredOracle{listings::kOrangeBookDiffractionName,
+                     &listings::makeOrangeBookDiffractionOracle},
 };
 
 struct RegisteredFragmentOracle {
@@ -43,6 +47,8 @@ constexpr std::array kFragmentOracles = {
                              &listings::makeOrangeBookFresnelFragmentOracle},
     RegisteredFragmentOracle{listings::kOrangeBookChromaticName,
                              &listings::makeOrangeBookChromaticFragmentOracle},
+    RegisteredFragmentOracle{listings::kOrangeBookDiffractionName,
+                             &listings::makeOrangeBookDiffractionFragmentOracle},
 };
 
 }  // namespace

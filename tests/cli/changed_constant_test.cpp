@@ -84,5 +84,10 @@ TEST(ChangedConstant, CgRefractConstantEditedFailsOnBothBackends) {
                                   "float cosT2 = 1.0f", "float cosT2 = 1.01f"));
 }
 
+TEST(ChangedConstant, DiffractionWidthEditedFailsOnBothBackends) {
+  expectEveryCaseFails(editedCopy("orange-book/14.2-diffraction", "diffraction.vert",
+                                  "const float c = 10.0;", "const float c = 11.0;"));
+}
+
 }  // namespace
 }  // namespace snell

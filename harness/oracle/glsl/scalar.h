@@ -45,6 +45,8 @@ inline double inversesqrt(double x) { return 1.0 / std::sqrt(x); }
 inline float inversesqrt(float x) { return 1.0f / std::sqrt(x); }
 inline double exp2(double x) { return std::exp2(x); }
 inline float exp2(float x) { return std::exp2(x); }
+inline double exp(double x) { return std::exp(x); }
+inline float exp(float x) { return std::exp(x); }
 inline double log2(double x) { return std::log2(x); }
 inline float log2(float x) { return std::log2(x); }
 inline double pow(double x, double y) { return std::pow(x, y); }
