@@ -75,7 +75,7 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
       ->check(CLI::Range(1, 256));
   sub.add_option("--timeout", options.timeout,
                   "Seconds a case may take before its worker is killed (default: the manifest's)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
   sub.add_flag("--validation", options.validation,
                 "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
