@@ -1,0 +1,82 @@
+// OpenGL against Vulkan: two images that differ beyond the warn threshold
+// make both results CompatibilityWarning; equal images leave them Pass.
+#include "runner/cross_api_check.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "compare/image_io.h"
+#include "runner/image_check.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CrossApi : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    out_ = fs::temp_directory_path() / ("snell-cross-api-" + std::to_string(getpid()));
+    fs::create_directories(out_ / "a" / "sphere");
+    manifest_.id = "a";
+    spec_.scene = "sphere";
+    spec_.checks = {"vectors", "image"};
+    spec_.image = {0.004, 0.002, 0.0, 0.05};
+    cases_.push_back({"a/sphere", &manifest_, spec_});
+    Image flat(4, 4);
+    std::fill(flat.pixels.begin(), flat.pixels.end(), 0.5f);
+    gl_ = vk_ = flat;
+    writeImageAtomically(maskImagePath(out_, "a/sphere"), Image(4, 4));  // nothing masked
+  }
+  void TearDown() override { fs::remove_all(out_); }
+
+  std::vector<CaseResult> run() {
+    writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
+    writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
+    std::vector<CaseResult> results(2);
+    results[0].caseId = results[1].caseId = "a/sphere";
+    results[0].backend = "gl";
+    results[1].backend = "vk";
+    checkAcrossApis(cases_, out_, results);
+    return results;
+  }
+
+  fs::path out_;
+  Manifest manifest_;
+  CaseSpec spec_;
+  std::vector<Case> cases_;
+  Image gl_, vk_;
+};
+
+TEST_F(CrossApi, EqualImagesStayPass) {
+  for (const CaseResult& r : run()) {
+    EXPECT_EQ(r.status, Status::Pass);
+    ASSERT_EQ(r.images.size(), 1u);
+    EXPECT_EQ(r.images[0].against, "other-api");
+  }
+}
+
+TEST_F(CrossApi, OnePixelBeyondWarnIsACompatibilityWarningOnBoth) {
+  vk_.at(2, 1)[0] += 0.003f;
+  for (const CaseResult& r : run()) {
+    EXPECT_EQ(r.status, Status::CompatibilityWarning) << r.backend;
+    EXPECT_NE(r.message.find("OpenGL and Vulkan differ"), std::string::npos) << r.message;
+  }
+}
+
+TEST_F(CrossApi, AMissingImageIsReportedNotIgnored) {
+  run();
+  fs::remove(renderedImagePath(out_, "a/sphere", "vk"));
+  std::vector<CaseResult> results(2);
+  results[0].caseId = results[1].caseId = "a/sphere";
+  results[0].backend = "gl";
+  results[1].backend = "vk";
+  checkAcrossApis(cases_, out_, results);
+  EXPECT_EQ(results[0].status, Status::CompatibilityWarning);
+  EXPECT_FALSE(results[0].images.at(0).problem.empty());
+}
+
+}  // namespace
+}  // namespace snell
