@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/cube_map.h"
+#include "core/fragment_probes.h"
 #include "core/image.h"
 #include "core/program_source.h"
 #include "core/values.h"
@@ -58,11 +59,15 @@ struct RenderJob {
   int height = 256;
   std::array<float, 4> clearColor{0, 0, 0, 0};
   bool cullBackFaces = true;
+  // Values read back from the fragment stage, each into an RGBA32F target of
+  // its own (core/fragment_probes.h inserts the writes into the listing).
+  std::vector<FragmentProbe> probes;
 };
 
 struct RenderOutcome {
   CompileOutcome compile;  // !compile.ok => image is empty
   Image image;             // width x height, row 0 at the top; the fragment shader's output 0
+  std::vector<Image> probes;  // one per RenderJob::probes, same layout; alpha 1 where written
 };
 
 class Backend {

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -126,6 +127,43 @@ class ManifestReader {
     return out;
   }
 
+  // fragment = [ { name = "refractview", type = "vec3", line = 12 }, ... ]
+  std::vector<FragmentCapture> fragmentCaptures(const toml::node& node, bool noFragmentStage) const {
+    const toml::array* array = node.as_array();
+    if (!array || !array->is_array_of_tables())
+      fail(lineOf(node), "`capture.fragment` must be an array of { name = ..., type = ..., line = ... }");
+    if (noFragmentStage)
+      fail(lineOf(node), "`capture.fragment` needs a fragment stage; add `fragment` to `stages`");
+    std::vector<FragmentCapture> out;
+    for (const toml::node& element : *array) {
+      const toml::table& table = *element.as_table();
+      FragmentCapture capture;
+      capture.manifestLine = lineOf(element);
+      capture.name = requiredString(table, "name", capture.manifestLine);
+      const std::string type = requiredString(table, "type", capture.manifestLine);
+      if (type == "float") capture.type = ValueType::Float;
+      else if (type == "vec2") capture.type = ValueType::Vec2;
+      else if (type == "vec3") capture.type = ValueType::Vec3;
+      else fail(capture.manifestLine,
+                fmt::format("capture `{}`: type `{}` cannot be read back; use float, vec2 or vec3 "
+                            "(the fourth channel marks the pixels that wrote it)", capture.name, type));
+      const toml::node* line = table.get("line");
+      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
+        fail(capture.manifestLine,
+             fmt::format("capture `{}`: `line` must be the fragment file's line (from 1) whose "
+                         "statement computes it", capture.name));
+      capture.line = static_cast<int>(*line->value<std::int64_t>());
+      for (const FragmentCapture& earlier : out)
+        if (earlier.name == capture.name)
+          fail(capture.manifestLine, fmt::format("capture `{}` is listed twice", capture.name));
+      out.push_back(std::move(capture));
+    }
+    if (out.size() > 7)
+      fail(lineOf(node), fmt::format("`capture.fragment` lists {} values; at most 7 fit beside "
+                                     "the listing's own colour output", out.size()));
+    return out;
+  }
+
   // image = { fail = 0.004, warn = 0.002, failpercent = 0, hardfail = 0.05 }
   ImageTolerance imageTolerance(const toml::table& caseTable, int caseLine) const {
     const toml::node* node = caseTable.get("image");
@@ -193,7 +231,30 @@ class ManifestReader {
     const toml::table& capture = requiredTable(root, "capture", 1);
     m.captureLine = lineOf(capture);
     if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
-    if (m.captureVertex.empty()) fail(lineOf(capture), "`capture.vertex` names no output to read back");
+    if (const toml::node* fragment = capture.get("fragment"))
+      m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
+    if (m.captureVertex.empty() && m.captureFragment.empty())
+      fail(lineOf(capture), "`capture` names nothing to read back; list outputs in "
+                            "`capture.vertex` or values in `capture.fragment`");
+
+    const std::string expect = optionalString(root, "expect");
+    if (expect.empty() || expect == "pass") m.expect = Expectation::Pass;
+    else if (expect == "compile-error") m.expect = Expectation::CompileError;
+    else fail(lineOf(*root.get("expect")),
+              fmt::format("expect `{}`: use \"pass\" or \"compile-error\"", expect));
+    if (const toml::node* unsupported = root.get("not_supported")) {
+      const toml::table* table = unsupported->as_table();
+      if (!table) fail(lineOf(*unsupported), "`not_supported` must be a table: { vk = \"reason\" }");
+      for (const auto& [backend, reason] : *table) {
+        if (backend.str() != "gl" && backend.str() != "vk")
+          fail(lineOf(reason), fmt::format("not_supported: unknown backend `{}`; use gl or vk",
+                                           backend.str()));
+        if (!reason.is_string() || reason.value<std::string>()->empty())
+          fail(lineOf(reason), fmt::format("not_supported.{} must give the reason as a string",
+                                           backend.str()));
+        m.notSupported[std::string(backend.str())] = *reason.value<std::string>();
+      }
+    }
 
     const toml::node* cases = root.get("case");
     if (!cases) fail(1, "no [[case]]: add at least one, e.g. [[case]] scene = \"sphere\"");

@@ -2,6 +2,7 @@
 // A listing's manifest: everything listing-specific, so the harness stays
 // generic and a user can gate their own shaders by writing one.
 #include <filesystem>
+#include <map>
 #include <string>
 #include <variant>
 #include <vector>
@@ -40,6 +41,20 @@ struct CaseSpec {
   bool has(const std::string& check) const;
 };
 
+// A value read back from the fragment stage: after the statement that ends
+// on `line` of the fragment file, `name` (any GLSL expression of `type` in
+// scope there) is written to a float render target of its own. Captures an
+// oracle names as inputs feed it; those it names as outputs are checked.
+struct FragmentCapture {
+  std::string name;
+  ValueType type = ValueType::Vec3;  // float, vec2 or vec3: the fourth channel marks "written"
+  int line = 0;                      // in the fragment file
+  int manifestLine = 0;              // where it is written, for messages
+};
+
+// What a listing is expected to do when it runs.
+enum class Expectation { Pass, CompileError };
+
 struct Manifest {
   std::filesystem::path path;  // the manifest file
   std::string id;
@@ -54,7 +69,14 @@ struct Manifest {
   std::vector<Binding> inputs;
   std::vector<Binding> uniforms;
   std::vector<std::string> captureVertex;
+  std::vector<FragmentCapture> captureFragment;
   int captureLine = 0;
+  // `expect = "compile-error"`: as published, the listing must not compile;
+  // the case passes as ExpectedCompileError with the diagnostic quoted.
+  Expectation expect = Expectation::Pass;
+  // `not_supported = { vk = "reason" }`: backends the listing cannot run on,
+  // each with the reason the report gives.
+  std::map<std::string, std::string> notSupported;
   std::vector<CaseSpec> cases;
   double timeoutSeconds = 60;  // per case; `snell run --timeout` overrides
 };

@@ -35,6 +35,7 @@ void addCameraValues(Scene& scene, const SceneFile& file) {
                                                          static_cast<float>(eye[1]),
                                                          static_cast<float>(eye[2])}};
   scene.values["modelview"] = toMat4Value(modelview);
+  scene.values["projection"] = toMat4Value(projection);
   scene.values["modelview_projection"] = toMat4Value(multiply(projection, modelview));
   scene.values["normal_matrix"] = normalMatrixValue(modelview);
   const Mat4d environment = multiply(

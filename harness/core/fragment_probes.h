@@ -1,0 +1,39 @@
+#pragma once
+// Reading values out of the fragment stage. A listing computes its
+// refracted and reflected directions in locals that no API can read back;
+// the probe adapter adds, after the statement that computes each one, a
+// write of its value to an extra float colour output, and nothing else:
+// the listing's own lines, their order and their line numbers stay as
+// published. Each probe's target holds (value, 1) where the statement ran
+// and (0, 0, 0, 0) elsewhere, so pixels a branch skipped are told apart.
+#include <string>
+#include <vector>
+
+#include "core/values.h"
+
+namespace snell {
+
+struct FragmentProbe {
+  std::string expression;  // a GLSL expression in scope after `line`, usually a variable
+  ValueType type = ValueType::Vec3;  // float, vec2 or vec3
+  int line = 0;                      // 1-based line of the fragment source
+};
+
+// How the extra outputs are declared. Outputs: `layout(location = k) out
+// vec4 snell_probe_k;` (k from 1; the listing's own output keeps 0).
+// FragData: for sources that write gl_FragColor, which may not be mixed
+// with user outputs: gl_FragColor becomes gl_FragData[0] and probe k writes
+// gl_FragData[k].
+enum class ProbeOutputStyle { Outputs, FragData };
+
+// The style a source needs: FragData when it writes gl_FragColor or
+// gl_FragData, Outputs otherwise.
+ProbeOutputStyle probeOutputStyleFor(const std::string& source);
+
+// The source with the probes' writes added. Throws UsageError
+// "PATH:LINE: ..." when a probe's line is outside main(), does not end a
+// statement, or the source has no main().
+std::string insertFragmentProbes(const std::string& source, const std::string& path,
+                                 const std::vector<FragmentProbe>& probes, ProbeOutputStyle style);
+
+}  // namespace snell
