@@ -6,6 +6,7 @@
 // the listing's own lines, their order and their line numbers stay as
 // published. Each probe's target holds (value, 1) where the statement ran
 // and (0, 0, 0, 0) elsewhere, so pixels a branch skipped are told apart.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -19,14 +20,21 @@ struct FragmentProbe {
   int line = 0;                      // 1-based line of the fragment source
 };
 
-// How the extra outputs are declared. Outputs: `layout(location = k) out
-// vec4 snell_probe_k;` (k from 1; the listing's own output keeps 0).
-// FragData: for sources that write gl_FragColor, which may not be mixed
-// with user outputs: gl_FragColor becomes gl_FragData[0] and probe k writes
-// gl_FragData[k].
-enum class ProbeOutputStyle { Outputs, FragData };
+// How the extra outputs are declared; probe k (from 0) goes to colour
+// output k + 1, the listing's own output keeps 0.
+// - Outputs: `out vec4 snell_probe_<k+1>;`, bound to its location by name
+//   through the API (OpenGL's glBindFragDataLocation works for any version).
+// - OutputsWithLocations: `layout(location = k + 1) out vec4 ...;`, for
+//   compilers that take locations from the text only (SPIR-V).
+// - FragData: for sources that write gl_FragColor, which may not be mixed
+//   with user outputs: gl_FragColor becomes gl_FragData[0] and probe k
+//   writes gl_FragData[k + 1].
+enum class ProbeOutputStyle { Outputs, OutputsWithLocations, FragData };
 
-// The style a source needs: FragData when it writes gl_FragColor or
+// "snell_probe_<index + 1>": the output the probe with this index writes.
+std::string probeOutputName(std::size_t index);
+
+// The style an OpenGL source needs: FragData when it writes gl_FragColor or
 // gl_FragData, Outputs otherwise.
 ProbeOutputStyle probeOutputStyleFor(const std::string& source);
 
