@@ -10,12 +10,18 @@
 #include "core/errors.h"
 #include "oracle/listings/cg_refraction.h"
 #include "oracle/listings/cg_refraction_builtin.h"
+#include "oracle/listings/cs381_chromatic_aberration.h"
+#include "oracle/listings/cs381_glass.h"
+#include "oracle/listings/cs381_refraction.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_chromatic_fragment.h"
 #include "oracle/listings/orange_book_diffraction.h"
 #include "oracle/listings/orange_book_diffraction_fragment.h"
 #include "oracle/listings/orange_book_fresnel.h"
 #include "oracle/listings/orange_book_fresnel_fragment.h"
+#include "oracle/listings/shadertoy_bubble.h"
+#include "oracle/listings/shadertoy_lens.h"
+#include "oracle/listings/shadertoy_lens_fresnel.h"
 #include "oracle/reference/fragment_oracle.h"
 #include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
@@ -33,8 +39,16 @@ constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
     RegisteredOracle{listings::kCgRefractionName, &listings::makeCgRefractionOracle},
     RegisteredOracle{listings::kCgRefractionBuiltinName, &listings::makeCgRefractionBuiltinOracle},
+    RegisteredOracle{listings::kCs381RefractionName, &listings::makeCs381RefractionOracle},
+    RegisteredOracle{listings::kCs381ChromaticAberrationName,
+                     &listings::makeCs381ChromaticAberrationOracle},
+    RegisteredOracle{listings::kCs381GlassName, &listings::makeCs381GlassOracle},
     RegisteredOracle{listings::kOrangeBookDiffractionName,
                      &listings::makeOrangeBookDiffractionOracle},
+    RegisteredOracle{listings::kShadertoyLensName, &listings::makeShadertoyLensOracle},
+    RegisteredOracle{listings::kShadertoyLensFresnelName,
+                     &listings::makeShadertoyLensFresnelOracle},
+    RegisteredOracle{listings::kShadertoyBubbleName, &listings::makeShadertoyBubbleOracle},
 };
 
 struct RegisteredFragmentOracle {
