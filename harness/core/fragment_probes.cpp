@@ -183,10 +183,7 @@ std::string insertFragmentProbes(const std::string& source, const std::string& p
   std::string declarations;
   if (style != ProbeOutputStyle::FragData)
     for (std::size_t k = 0; k < probes.size(); ++k)
-      declarations += style == ProbeOutputStyle::OutputsWithLocations
-                          ? fmt::format("layout(location = {}) out vec4 {}; ", k + 1,
-                                        probeOutputName(k))
-                          : fmt::format("out vec4 {}; ", probeOutputName(k));
+      declarations += fmt::format("out vec4 {}; ", probeOutputName(k));
 
   std::string out;
   for (std::size_t l = 0; l < lines.text.size(); ++l) {

@@ -22,14 +22,13 @@ struct FragmentProbe {
 
 // How the extra outputs are declared; probe k (from 0) goes to colour
 // output k + 1, the listing's own output keeps 0.
-// - Outputs: `out vec4 snell_probe_<k+1>;`, bound to its location by name
-//   through the API (OpenGL's glBindFragDataLocation works for any version).
-// - OutputsWithLocations: `layout(location = k + 1) out vec4 ...;`, for
-//   compilers that take locations from the text only (SPIR-V).
+// - Outputs: `out vec4 snell_probe_<k+1>;`, placed at its location by name
+//   (OpenGL's glBindFragDataLocation, a SPIR-V pass on Vulkan), since GLSL
+//   before 3.30 has no layout locations on outputs.
 // - FragData: for sources that write gl_FragColor, which may not be mixed
 //   with user outputs: gl_FragColor becomes gl_FragData[0] and probe k
 //   writes gl_FragData[k + 1].
-enum class ProbeOutputStyle { Outputs, OutputsWithLocations, FragData };
+enum class ProbeOutputStyle { Outputs, FragData };
 
 // "snell_probe_<index + 1>": the output the probe with this index writes.
 std::string probeOutputName(std::size_t index);

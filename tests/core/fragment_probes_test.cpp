@@ -51,13 +51,6 @@ TEST(FragmentProbes, WritesAfterTheStatementAndKeepsEveryLineNumber) {
   EXPECT_EQ(after[1], before[1]);  // the comment's main() is left alone
 }
 
-TEST(FragmentProbes, ExplicitLocationsForSpirv) {
-  const std::string out = insertFragmentProbes(kListing, "x.frag", {{"v.xy", ValueType::Vec2, 10}},
-                                               ProbeOutputStyle::OutputsWithLocations);
-  EXPECT_NE(out.find("layout(location = 1) out vec4 snell_probe_1; void main()"), std::string::npos);
-  EXPECT_NE(out.find("snell_probe_1 = vec4((v.xy), 0.0, 1.0);"), std::string::npos);
-}
-
 TEST(FragmentProbes, LegacyOutputsMoveToFragData) {
   const std::string legacy =
       "varying vec3 v;\n"

@@ -1,5 +1,6 @@
 #include "backends/gl/gl_backend.h"
 
+#include <iterator>
 #include <memory>
 
 #include "backends/gl/gl_context_state.h"
@@ -39,13 +40,22 @@ class GlBackend final : public Backend {
 
   // Renders link with no feedback varyings, so a listing that is both
   // captured and rendered is linked twice; each link is cached.
+  // Probes are written into the fragment text before it is compiled
+  // (core/fragment_probes.h); the style follows the listing's own output.
   RenderOutcome render(const RenderJob& job) override {
     GlContextState& state = stateFor(job.program.profile);
-    GlLinkedProgram& program = state.programs().get(job.program, {});
+    ProgramSource source = job.program;
+    if (!job.probes.empty())
+      source.fragment = insertFragmentProbes(source.fragment, source.fragmentPath, job.probes,
+                                             probeOutputStyleFor(source.fragment));
+    GlLinkedProgram& program = state.programs().get(source, {});
     RenderOutcome outcome;
     outcome.compile = program.compile;
     if (!outcome.compile.ok) return outcome;
-    outcome.image = state.renderer().run(program, job);
+    std::vector<Image> images = state.renderer().run(program, job);
+    outcome.image = std::move(images.front());
+    outcome.probes.assign(std::make_move_iterator(images.begin() + 1),
+                          std::make_move_iterator(images.end()));
     return outcome;
   }
 

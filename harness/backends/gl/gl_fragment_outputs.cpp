@@ -28,10 +28,26 @@ std::vector<GlFragmentOutput> queryFragmentOutputs(GLuint program) {
   return outputs;
 }
 
-bool bindLoneOutputToZero(GLuint program) {
+bool bindOutputLocations(GLuint program) {
   const std::vector<GlFragmentOutput> outputs = queryFragmentOutputs(program);
-  if (outputs.size() != 1 || outputs.front().location == 0) return true;
-  glBindFragDataLocation(program, 0, outputs.front().name.c_str());
+  const std::string probePrefix = "snell_probe_";
+  std::vector<const GlFragmentOutput*> listingOutputs;
+  bool moved = false;
+  for (const GlFragmentOutput& output : outputs) {
+    if (output.name.rfind(probePrefix, 0) != 0) {
+      listingOutputs.push_back(&output);
+      continue;
+    }
+    const GLint location = std::stoi(output.name.substr(probePrefix.size()));
+    if (output.location == location) continue;
+    glBindFragDataLocation(program, static_cast<GLuint>(location), output.name.c_str());
+    moved = true;
+  }
+  if (listingOutputs.size() == 1 && listingOutputs.front()->location != 0) {
+    glBindFragDataLocation(program, 0, listingOutputs.front()->name.c_str());
+    moved = true;
+  }
+  if (!moved) return true;
   glLinkProgram(program);
   GLint linked = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &linked);

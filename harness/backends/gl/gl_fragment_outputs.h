@@ -17,10 +17,12 @@ struct GlFragmentOutput {
 // shader.
 std::vector<GlFragmentOutput> queryFragmentOutputs(GLuint program);
 
-// Renders read colour attachment 0. A lone output with no layout goes
-// wherever the linker puts it, which the spec leaves open; when that is not
-// location 0, the output is bound there and the program relinked (a layout
-// qualifier still wins). Returns false when that relink fails.
-bool bindLoneOutputToZero(GLuint program);
+// Renders read colour attachment 0, and probe k's output (snell_probe_k,
+// core/fragment_probes.h) from attachment k. An output with no layout goes
+// wherever the linker puts it, which the spec leaves open; so each probe is
+// bound to its location by name, the listing's lone output to 0, and the
+// program relinked when anything moved (a layout qualifier still wins).
+// Returns false when that relink fails.
+bool bindOutputLocations(GLuint program);
 
 }  // namespace snell

@@ -24,24 +24,32 @@ const char* glFramebufferStatusName(GLenum status) {
   }
 }
 
-GlFramebuffer::GlFramebuffer(int width, int height) {
+GlFramebuffer::GlFramebuffer(int width, int height, int colourTargets)
+    : colour_(static_cast<std::size_t>(colourTargets)) {
   glGenFramebuffers(1, &framebuffer_);
-  glGenRenderbuffers(1, &colour_);
+  glGenRenderbuffers(colourTargets, colour_.data());
   glGenRenderbuffers(1, &depth_);
-  glBindRenderbuffer(GL_RENDERBUFFER, colour_);
-  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  std::vector<GLenum> drawBuffers;
+  for (int k = 0; k < colourTargets; ++k) {
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_[static_cast<std::size_t>(k)]);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, width, height);
+    const GLenum attachment = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + k);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER,
+                              colour_[static_cast<std::size_t>(k)]);
+    drawBuffers.push_back(attachment);
+  }
   glBindRenderbuffer(GL_RENDERBUFFER, depth_);
   glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
   // Draw and read buffers are framebuffer state: set once, here.
-  glDrawBuffer(GL_COLOR_ATTACHMENT0);
+  glDrawBuffers(colourTargets, drawBuffers.data());
   glReadBuffer(GL_COLOR_ATTACHMENT0);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const std::string size = std::to_string(width) + "x" + std::to_string(height) + " (" +
+                           std::to_string(colourTargets) + " colour targets)";
   try {
     throwOnGlError(("creating a " + size + " RGBA32F + DEPTH_COMPONENT32F framebuffer").c_str());
   } catch (...) {
@@ -60,12 +68,13 @@ GlFramebuffer::~GlFramebuffer() { release(); }
 void GlFramebuffer::release() {
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteRenderbuffers(1, &depth_);
-  glDeleteRenderbuffers(1, &colour_);
-  framebuffer_ = depth_ = colour_ = 0;
+  if (!colour_.empty()) glDeleteRenderbuffers(static_cast<GLsizei>(colour_.size()), colour_.data());
+  colour_.clear();
+  framebuffer_ = depth_ = 0;
 }
 
-GlFramebuffer& GlFramebufferCache::get(int width, int height) {
-  const std::pair<int, int> size{width, height};
+GlFramebuffer& GlFramebufferCache::get(int width, int height, int colourTargets) {
+  const std::tuple<int, int, int> size{width, height, colourTargets};
   auto found = entries_.find(size);
   if (found == entries_.end()) {
     if (entries_.size() >= kCapacity) {
@@ -74,7 +83,7 @@ GlFramebuffer& GlFramebufferCache::get(int width, int height) {
         if (entry->second.lastUse < oldest->second.lastUse) oldest = entry;
       entries_.erase(oldest);
     }
-    found = entries_.emplace(size, Entry{std::make_unique<GlFramebuffer>(width, height), 0}).first;
+    found = entries_.emplace(size, Entry{std::make_unique<GlFramebuffer>(width, height, colourTargets), 0}).first;
   }
   found->second.lastUse = ++uses_;
   return *found->second.framebuffer;

@@ -120,8 +120,8 @@ BuiltProgram buildGlProgram(const ProgramSource& source,
 
   if (linked != GL_TRUE) return built;
   if (hasFragment) {
-    if (!bindLoneOutputToZero(program.id())) {
-      appendLog(log, heading, "relinking with the fragment output bound to location 0 failed:\n" +
+    if (!bindOutputLocations(program.id())) {
+      appendLog(log, heading, "relinking with the fragment outputs bound to their locations failed:\n" +
                                   programLog(program.id()));
       return built;
     }

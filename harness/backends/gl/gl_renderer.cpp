@@ -1,6 +1,7 @@
 #include "backends/gl/gl_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <string>
 
@@ -107,11 +108,24 @@ void bindCubeMaps(const GlCubeSamplerPlan& plan, GlCubeTextures& textures) {
   throwOnGlError("binding cube map samplers (glUniform1i, GL_TEXTURE_CUBE_MAP_SEAMLESS)");
 }
 
+// The listing's target is cleared to the job's colour, each probe's to 0:
+// alpha 0 marks a pixel its write never reached.
+void clearTargets(const RenderJob& job, int colourTargets) {
+  glClearBufferfv(GL_COLOR, 0, job.clearColor.data());
+  const std::array<float, 4> unwritten{0, 0, 0, 0};
+  for (int k = 1; k < colourTargets; ++k) glClearBufferfv(GL_COLOR, k, unwritten.data());
+  const float depth = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &depth);
+  throwOnGlError("glClearBufferfv");
+}
+
 // GL's row 0 is the bottom of the image; Image's is the top.
-Image readBack(int width, int height) {
+Image readBack(int width, int height, int attachment) {
   const std::size_t rowFloats = static_cast<std::size_t>(width) * 4;
   std::vector<float> bottomUp(rowFloats * static_cast<std::size_t>(height));
+  glReadBuffer(static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + attachment));
   glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, bottomUp.data());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
   throwOnGlError("glReadPixels(GL_RGBA, GL_FLOAT)");
   Image image(width, height);
   for (int row = 0; row < height; ++row)
@@ -122,12 +136,13 @@ Image readBack(int width, int height) {
 
 }  // namespace
 
-Image GlRenderer::run(GlLinkedProgram& program, const RenderJob& job) {
+std::vector<Image> GlRenderer::run(GlLinkedProgram& program, const RenderJob& job) {
   checkJob(program, job);
   const std::size_t vertexCount = vertexCountOf(job.indices);
   GlVertexInputs::check(program, job.attributes, vertexCount);
   const GlCubeSamplerPlan samplers = planCubeSamplers(program.uniforms.samplers(), job.cubeMaps);
-  GlFramebuffer& target = framebuffers_.get(job.width, job.height);
+  const int colourTargets = 1 + static_cast<int>(job.probes.size());
+  GlFramebuffer& target = framebuffers_.get(job.width, job.height, colourTargets);
 
   RenderStateGuard guard(program.program.id(), inputs_.vertexArray(), target.id(),
                          static_cast<int>(samplers.bindings.size()));
@@ -138,13 +153,14 @@ Image GlRenderer::run(GlLinkedProgram& program, const RenderJob& job) {
   inputs_.bindIndices(job.indices);
   setRasterState(job);
 
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  throwOnGlError("glClear");
+  clearTargets(job, colourTargets);
   if (!job.indices.empty()) {
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(job.indices.size()), GL_UNSIGNED_INT, nullptr);
     throwOnGlError("glDrawElements(GL_TRIANGLES, GL_UNSIGNED_INT)");
   }
-  return readBack(job.width, job.height);
+  std::vector<Image> images;
+  for (int k = 0; k < colourTargets; ++k) images.push_back(readBack(job.width, job.height, k));
+  return images;
 }
 
 }  // namespace snell

@@ -15,10 +15,11 @@ class GlRenderer {
   explicit GlRenderer(GlVertexInputs& inputs) : inputs_(inputs) {}
 
   // Draws the job's triangles with the program (which must have linked) and
-  // reads the colour target back, row 0 at the top. Throws UsageError for a
+  // reads the colour targets back, row 0 at the top: the listing's output
+  // first, then one per probe (the program must hold the probes' writes). Throws UsageError for a
   // job that does not fit the program and SetupError for GL errors; either
   // way the bindings and enables a capture relies on are put back.
-  Image run(GlLinkedProgram& program, const RenderJob& job);
+  std::vector<Image> run(GlLinkedProgram& program, const RenderJob& job);
 
  private:
   GlVertexInputs& inputs_;

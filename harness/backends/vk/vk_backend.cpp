@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <exception>
+#include <iterator>
 #include <utility>
 
 #include "backends/vk/glsl_to_spirv.h"
 #include "backends/vk/lru_cache.h"
 #include "backends/vk/program_key.h"
+#include "backends/vk/spirv_output_locations.h"
 #include "backends/vk/uniform_block_layout.h"
 #include "backends/vk/vertex_streams.h"
 #include "backends/vk/vk_capture.h"
@@ -48,6 +50,16 @@ std::vector<CapturedVarying> splitRecords(std::span<const float> records,
     varyings.push_back(std::move(out));
   }
   return varyings;
+}
+
+// The program with its probe outputs at the locations the render reads.
+VulkanProgram withProbeLocations(const VulkanProgram& compiled, const ProgramSource& source) {
+  VulkanProgram placed = compiled;
+  if (!placed.ok) return placed;
+  OutputLocationResult result = assignProbeOutputLocations(placed.fragmentSpirv);
+  if (!result.ok()) throw SetupError(source.fragmentPath + ": placing the probe outputs: " + result.error);
+  placed.fragmentSpirv = std::move(result.spirv);
+  return placed;
 }
 
 class VkBackend final : public Backend {
@@ -177,8 +189,18 @@ class VkBackend final : public Backend {
                        " of them; got " + std::to_string(job.indices.size()) + " indices");
     }
 
-    PreparedRender& prepared = renders_.getOrMake(programKey(job.program), [&] {
-      return prepareRender(device_, renderRunner_.renderPass(), compiled(job.program), job.program);
+    // Probes are written into the fragment text before it is compiled
+    // (core/fragment_probes.h), and their outputs placed in the SPIR-V.
+    ProgramSource source = job.program;
+    if (!job.probes.empty())
+      source.fragment = insertFragmentProbes(source.fragment, source.fragmentPath, job.probes,
+                                             ProbeOutputStyle::Outputs);
+    const auto colourTargets = static_cast<std::uint32_t>(1 + job.probes.size());
+    PreparedRender& prepared = renders_.getOrMake(programKey(source), [&] {
+      if (job.probes.empty())
+        return prepareRender(device_, renderRunner_.renderPass(1), 1, compiled(source), source);
+      return prepareRender(device_, renderRunner_.renderPass(colourTargets), colourTargets,
+                           withProbeLocations(compiled(source), source), source);
     });
     RenderOutcome outcome;
     outcome.compile = {prepared.program.ok, prepared.program.log};
@@ -212,7 +234,11 @@ class VkBackend final : public Backend {
     draw.width = static_cast<std::uint32_t>(job.width);
     draw.height = static_cast<std::uint32_t>(job.height);
     draw.clearColor = job.clearColor;
-    outcome.image = renderRunner_.run(draw);
+    draw.colourTargets = colourTargets;
+    std::vector<Image> images = renderRunner_.run(draw);
+    outcome.image = std::move(images.front());
+    outcome.probes.assign(std::make_move_iterator(images.begin() + 1),
+                          std::make_move_iterator(images.end()));
     return outcome;
   }
 

@@ -24,6 +24,7 @@ void requireValid(const std::vector<std::uint32_t>& spirv, const std::string& fi
 }  // namespace
 
 std::unique_ptr<PreparedRender> prepareRender(const VulkanDevice& device, VkRenderPass renderPass,
+                                              std::uint32_t colourTargets,
                                               const VulkanProgram& compiled,
                                               const ProgramSource& source) {
   auto prepared = std::make_unique<PreparedRender>();
@@ -57,7 +58,7 @@ std::unique_ptr<PreparedRender> prepareRender(const VulkanDevice& device, VkRend
     throw SetupError(files + ": the program uses " + kDefaultUniformBlock +
                      " but reflection does not list it");
   }
-  prepared->pipelines = std::make_unique<RenderPipelines>(device, renderPass, bound.vertexSpirv,
+  prepared->pipelines = std::make_unique<RenderPipelines>(device, renderPass, colourTargets, bound.vertexSpirv,
                                                           bound.fragmentSpirv, bound.descriptors);
   return prepared;
 }

@@ -33,6 +33,7 @@ struct PreparedRender {
 // other than loose uniforms and samplerCube is a UsageError naming it, and
 // a Vulkan failure a SetupError.
 std::unique_ptr<PreparedRender> prepareRender(const VulkanDevice& device, VkRenderPass renderPass,
+                                              std::uint32_t colourTargets,
                                               const VulkanProgram& compiled,
                                               const ProgramSource& source);
 

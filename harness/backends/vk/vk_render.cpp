@@ -17,7 +17,6 @@ constexpr VkDeviceSize kPixelBytes = 4 * sizeof(float);
 
 RenderRunner::RenderRunner(const VulkanDevice& device)
     : device_(device),
-      pass_(device),
       commands_(device),
       cubeImages_(device, commands_),
       targets_(kCachedTargets),
@@ -32,7 +31,13 @@ std::span<std::byte> RenderRunner::uniformBlock(std::size_t bytes) {
   return {uniforms_.data(), bytes};
 }
 
-Image RenderRunner::run(const RenderDraw& draw) {
+VkRenderPass RenderRunner::renderPass(std::uint32_t colourTargets) {
+  auto& pass = passes_[colourTargets];
+  if (!pass) pass = std::make_unique<RenderPass>(device_, colourTargets);
+  return pass->handle();
+}
+
+std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
   if (draw.cubeMaps.size() > CubeImageCache::kCapacity) {
     throw UsageError("the program samples " + std::to_string(draw.cubeMaps.size()) +
                      " cube maps; a Vulkan render binds at most " +
@@ -50,9 +55,13 @@ Image RenderRunner::run(const RenderDraw& draw) {
     draw.descriptors->writeUniformBuffer(*draw.uniformBinding, uniforms_.handle(),
                                          draw.uniformBytes);
 
-  const RenderTarget& target =
-      targets_.getOrMake(std::to_string(draw.width) + "x" + std::to_string(draw.height), [&] {
-        return std::make_unique<RenderTarget>(device_, pass_.handle(), draw.width, draw.height);
+  const VkRenderPass pass = renderPass(draw.colourTargets);
+  const RenderTarget& target = targets_.getOrMake(
+      std::to_string(draw.width) + "x" + std::to_string(draw.height) + "x" +
+          std::to_string(draw.colourTargets),
+      [&] {
+        return std::make_unique<RenderTarget>(device_, pass, draw.colourTargets, draw.width,
+                                              draw.height);
       });
   std::vector<VkDeviceSize> offsets;
   if (!draw.indices.empty()) {
@@ -61,29 +70,35 @@ Image RenderRunner::run(const RenderDraw& draw) {
     std::memcpy(indices_.data(), draw.indices.data(), draw.indices.size_bytes());
   }
   const VkDeviceSize imageBytes = VkDeviceSize{draw.width} * draw.height * kPixelBytes;
-  readBack_.reserve(imageBytes);
+  readBack_.reserve(imageBytes * draw.colourTargets);
 
-  record(commands_.begin(), draw, target, offsets);
+  record(commands_.begin(), draw, pass, target, offsets);
   commands_.submitAndWait("render");
 
-  Image image(static_cast<int>(draw.width), static_cast<int>(draw.height));
-  std::memcpy(image.pixels.data(), readBack_.data(), imageBytes);
-  return image;
+  std::vector<Image> images;
+  for (std::uint32_t k = 0; k < draw.colourTargets; ++k) {
+    Image image(static_cast<int>(draw.width), static_cast<int>(draw.height));
+    std::memcpy(image.pixels.data(), readBack_.data() + k * imageBytes, imageBytes);
+    images.push_back(std::move(image));
+  }
+  return images;
 }
 
-void RenderRunner::record(VkCommandBuffer commands, const RenderDraw& draw,
+void RenderRunner::record(VkCommandBuffer commands, const RenderDraw& draw, VkRenderPass renderPass,
                           const RenderTarget& target,
                           const std::vector<VkDeviceSize>& streamOffsets) {
-  VkClearValue clears[2]{};
+  // The listing's target is cleared to the job's colour, each probe's to 0:
+  // alpha 0 marks a pixel its write never reached.
+  std::vector<VkClearValue> clears(draw.colourTargets + 1);
   for (int c = 0; c < 4; ++c) clears[0].color.float32[c] = draw.clearColor[c];
-  clears[1].depthStencil = {1.0f, 0};
+  clears.back().depthStencil = {1.0f, 0};
   VkRenderPassBeginInfo pass{};
   pass.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO;
-  pass.renderPass = pass_.handle();
+  pass.renderPass = renderPass;
   pass.framebuffer = target.framebuffer();
   pass.renderArea.extent = {draw.width, draw.height};
-  pass.clearValueCount = 2;
-  pass.pClearValues = clears;
+  pass.clearValueCount = static_cast<std::uint32_t>(clears.size());
+  pass.pClearValues = clears.data();
   vkCmdBeginRenderPass(commands, &pass, VK_SUBPASS_CONTENTS_INLINE);
 
   if (!draw.indices.empty()) {
@@ -112,11 +127,14 @@ void RenderRunner::record(VkCommandBuffer commands, const RenderDraw& draw,
   vkCmdEndRenderPass(commands);
 
   // The pass leaves the colour image in TRANSFER_SRC_OPTIMAL, after its writes.
-  VkBufferImageCopy region{};
-  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {draw.width, draw.height, 1};
-  vkCmdCopyImageToBuffer(commands, target.colourImage(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         readBack_.handle(), 1, &region);
+  for (std::uint32_t k = 0; k < draw.colourTargets; ++k) {
+    VkBufferImageCopy region{};
+    region.bufferOffset = VkDeviceSize{k} * draw.width * draw.height * kPixelBytes;
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {draw.width, draw.height, 1};
+    vkCmdCopyImageToBuffer(commands, target.colourImage(k), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readBack_.handle(), 1, &region);
+  }
   VkMemoryBarrier toHost{};
   toHost.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
   toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;

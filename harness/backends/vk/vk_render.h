@@ -8,6 +8,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -45,6 +47,7 @@ struct RenderDraw {
   std::uint32_t width = 0;
   std::uint32_t height = 0;
   std::array<float, 4> clearColor{};
+  std::uint32_t colourTargets = 1;  // the listing's output, then one per probe
 };
 
 class RenderRunner {
@@ -53,21 +56,23 @@ class RenderRunner {
   RenderRunner(const RenderRunner&) = delete;
   RenderRunner& operator=(const RenderRunner&) = delete;
 
-  VkRenderPass renderPass() const { return pass_.handle(); }
+  // The pass for this many colour targets, made on first use.
+  VkRenderPass renderPass(std::uint32_t colourTargets);
 
   // Zeroed, mapped room for the next run's uniform block (zero is what GL
   // gives a uniform nobody set).
   std::span<std::byte> uniformBlock(std::size_t bytes);
 
-  // The colour attachment, row 0 at the top.
-  Image run(const RenderDraw& draw);
+  // The colour attachments, row 0 at the top, in attachment order.
+  std::vector<Image> run(const RenderDraw& draw);
 
  private:
-  void record(VkCommandBuffer commands, const RenderDraw& draw, const RenderTarget& target,
+  void record(VkCommandBuffer commands, const RenderDraw& draw, VkRenderPass renderPass,
+              const RenderTarget& target,
               const std::vector<VkDeviceSize>& streamOffsets);
 
   const VulkanDevice& device_;
-  RenderPass pass_;
+  std::map<std::uint32_t, std::unique_ptr<RenderPass>> passes_;
   OneTimeCommands commands_;
   CubeImageCache cubeImages_;
   LruCache<RenderTarget> targets_;

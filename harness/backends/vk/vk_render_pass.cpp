@@ -2,10 +2,13 @@
 
 #include "backends/vk/vk_check.h"
 
+#include <vector>
+
 namespace snell::vk {
 
-RenderPass::RenderPass(const VulkanDevice& device) : device_(device) {
-  VkAttachmentDescription attachments[2]{};
+RenderPass::RenderPass(const VulkanDevice& device, std::uint32_t colourTargets)
+    : device_(device), colourTargets_(colourTargets) {
+  std::vector<VkAttachmentDescription> attachments(colourTargets + 1);
   VkAttachmentDescription& colour = attachments[0];
   colour.format = kColourFormat;
   colour.samples = VK_SAMPLE_COUNT_1_BIT;
@@ -15,18 +18,22 @@ RenderPass::RenderPass(const VulkanDevice& device) : device_(device) {
   colour.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   colour.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;  // every render clears it
   colour.finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-  VkAttachmentDescription& depth = attachments[1];
+  for (std::uint32_t k = 1; k < colourTargets; ++k) attachments[k] = colour;
+  VkAttachmentDescription& depth = attachments[colourTargets];
   depth = colour;
   depth.format = kDepthFormat;
   depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   depth.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
 
-  const VkAttachmentReference colourRef{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
-  const VkAttachmentReference depthRef{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  std::vector<VkAttachmentReference> colourRefs;
+  for (std::uint32_t k = 0; k < colourTargets; ++k)
+    colourRefs.push_back({k, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL});
+  const VkAttachmentReference depthRef{colourTargets,
+                                       VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
-  subpass.colorAttachmentCount = 1;
-  subpass.pColorAttachments = &colourRef;
+  subpass.colorAttachmentCount = colourTargets;
+  subpass.pColorAttachments = colourRefs.data();
   subpass.pDepthStencilAttachment = &depthRef;
 
   // The same target is reused by the next render: its clear must wait for
@@ -52,8 +59,8 @@ RenderPass::RenderPass(const VulkanDevice& device) : device_(device) {
 
   VkRenderPassCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO;
-  info.attachmentCount = 2;
-  info.pAttachments = attachments;
+  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
   info.subpassCount = 1;
   info.pSubpasses = &subpass;
   info.dependencyCount = 2;

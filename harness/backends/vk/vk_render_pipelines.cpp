@@ -26,11 +26,13 @@ std::vector<VkDescriptorSetLayoutBinding> layoutBindings(
 }  // namespace
 
 RenderPipelines::RenderPipelines(const VulkanDevice& device, VkRenderPass renderPass,
+                                 std::uint32_t colourTargets,
                                  std::span<const std::uint32_t> vertexSpirv,
                                  std::span<const std::uint32_t> fragmentSpirv,
                                  const std::vector<ProgramDescriptor>& descriptors)
     : device_(device),
       renderPass_(renderPass),
+      colourTargets_(colourTargets),
       vertex_(device, vertexSpirv),
       fragment_(device, fragmentSpirv),
       descriptors_(device, layoutBindings(descriptors)) {}
@@ -89,10 +91,11 @@ VkPipeline RenderPipelines::pipeline(const std::vector<VertexInputFormat>& input
   VkPipelineColorBlendAttachmentState colour{};
   colour.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                           VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  const std::vector<VkPipelineColorBlendAttachmentState> colours(colourTargets_, colour);
   VkPipelineColorBlendStateCreateInfo blend{};
   blend.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
-  blend.attachmentCount = 1;
-  blend.pAttachments = &colour;
+  blend.attachmentCount = colourTargets_;
+  blend.pAttachments = colours.data();
 
   VkPipelineShaderStageCreateInfo stages[2]{};
   for (VkPipelineShaderStageCreateInfo& stage : stages) {

@@ -22,7 +22,7 @@ class RenderPipelines {
  public:
   // `descriptors` lists only uniform buffers and combined image samplers,
   // as bindProgramDescriptors found them in these very modules.
-  RenderPipelines(const VulkanDevice& device, VkRenderPass renderPass,
+  RenderPipelines(const VulkanDevice& device, VkRenderPass renderPass, std::uint32_t colourTargets,
                   std::span<const std::uint32_t> vertexSpirv,
                   std::span<const std::uint32_t> fragmentSpirv,
                   const std::vector<ProgramDescriptor>& descriptors);
@@ -37,6 +37,7 @@ class RenderPipelines {
  private:
   const VulkanDevice& device_;
   VkRenderPass renderPass_;
+  std::uint32_t colourTargets_;
   ShaderModule vertex_;
   ShaderModule fragment_;
   ProgramDescriptorSet descriptors_;

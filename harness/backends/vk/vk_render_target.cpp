@@ -37,28 +37,32 @@ VkImageCreateInfo attachmentInfo(const VulkanDevice& device, VkFormat format,
 
 }  // namespace
 
-RenderTarget::RenderTarget(const VulkanDevice& device, VkRenderPass renderPass, std::uint32_t width,
-                           std::uint32_t height)
+RenderTarget::RenderTarget(const VulkanDevice& device, VkRenderPass renderPass,
+                           std::uint32_t colourTargets, std::uint32_t width, std::uint32_t height)
     : device_(device),
-      colour_(
-          device,
-          attachmentInfo(
-              device, kColourFormat,
-              VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT,
-              "VK_FORMAT_R32G32B32A32_SFLOAT",
-              VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, width, height),
-          VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT),
       depth_(device,
              attachmentInfo(device, kDepthFormat, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT,
                             "VK_FORMAT_D32_SFLOAT", VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                             width, height),
              VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_DEPTH_BIT) {
-  const VkImageView views[] = {colour_.view(), depth_.view()};
+  std::vector<VkImageView> views;
+  for (std::uint32_t k = 0; k < colourTargets; ++k) {
+    colours_.push_back(std::make_unique<DeviceImage>(
+        device,
+        attachmentInfo(device, kColourFormat,
+                       VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT,
+                       "VK_FORMAT_R32G32B32A32_SFLOAT",
+                       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                       width, height),
+        VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT));
+    views.push_back(colours_.back()->view());
+  }
+  views.push_back(depth_.view());
   VkFramebufferCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO;
   info.renderPass = renderPass;
-  info.attachmentCount = 2;
-  info.pAttachments = views;
+  info.attachmentCount = static_cast<std::uint32_t>(views.size());
+  info.pAttachments = views.data();
   info.width = width;
   info.height = height;
   info.layers = 1;
