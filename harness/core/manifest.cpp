@@ -233,6 +233,9 @@ class ManifestReader {
     if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
     if (const toml::node* fragment = capture.get("fragment"))
       m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
+    if (!m.captureVertex.empty() && !m.captureFragment.empty())
+      fail(lineOf(capture), "`capture` lists both vertex outputs and fragment values; a listing "
+                            "is checked at one stage: keep the one its oracle mirrors");
     if (m.captureVertex.empty() && m.captureFragment.empty())
       fail(lineOf(capture), "`capture` names nothing to read back; list outputs in "
                             "`capture.vertex` or values in `capture.fragment`");

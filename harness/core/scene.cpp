@@ -152,12 +152,26 @@ void sweep(Scene& scene, const SceneFile& file) {
   scene.attributes["tangent"] = std::move(tangent);
 }
 
+// One triangle over the whole viewport, straight in clip space, as
+// Shadertoy draws: every pixel runs the fragment shader once, and no edge
+// crosses the image.
+void fullscreen(Scene& scene) {
+  AttributeStream position{"position", 4, {-1, -1, 0.5f, 1, 3, -1, 0.5f, 1, -1, 3, 0.5f, 1}};
+  AttributeStream normal{"normal", 3, {0, 0, 1, 0, 0, 1, 0, 0, 1}};
+  AttributeStream tangent{"tangent", 3, {1, 0, 0, 1, 0, 0, 1, 0, 0}};
+  scene.indices = {0, 1, 2};
+  scene.attributes["position"] = std::move(position);
+  scene.attributes["normal"] = std::move(normal);
+  scene.attributes["tangent"] = std::move(tangent);
+}
+
 Scene build(const SceneFile& file) {
   Scene scene;
   scene.name = file.name;
   scene.description = file.description;
   if (file.shape == "sphere") sphere(scene, file);
   else if (file.shape == "torus") torus(scene, file);
+  else if (file.shape == "fullscreen") fullscreen(scene);
   else sweep(scene, file);
   scene.vertexCount = scene.attributes.at("position").vertexCount();
   addCameraValues(scene, file);
@@ -165,6 +179,9 @@ Scene build(const SceneFile& file) {
     scene.width = file.width;
     scene.height = file.height;
     scene.environment = std::make_shared<const CubeMap>(makeEnvironment(file.environmentSize));
+    // Shadertoy's iResolution: the viewport in pixels, and a pixel aspect of 1.
+    scene.values["resolution"] = Value{ValueType::Vec3, {static_cast<float>(file.width),
+                                                         static_cast<float>(file.height), 1.0f}};
   }
   return scene;
 }

@@ -77,7 +77,7 @@ class SceneReader {
     }
     const toml::table& geometry = *table(root, "geometry", true);
     const toml::node* shape = geometry.get("shape");
-    if (!shape || !shape->is_string()) fail(&geometry, "`geometry.shape` must be \"sphere\", \"torus\" or \"sweep\"");
+    if (!shape || !shape->is_string()) fail(&geometry, "`geometry.shape` must be \"sphere\", \"torus\", \"sweep\" or \"fullscreen\"");
     s.shape = std::string(*shape->value<std::string>());
     if (s.shape == "sphere") {
       s.stacks = positive(geometry, "stacks");
@@ -92,8 +92,8 @@ class SceneReader {
     } else if (s.shape == "sweep") {
       s.count = positive(geometry, "count");
       s.seed = static_cast<long long>(number(geometry, "seed", 1, false));
-    } else {
-      fail(shape, fmt::format("unknown shape `{}`; use sphere, torus or sweep", s.shape));
+    } else if (s.shape != "fullscreen") {
+      fail(shape, fmt::format("unknown shape `{}`; use sphere, torus, sweep or fullscreen", s.shape));
     }
     if (const toml::table* model = table(root, "model", false)) {
       s.modelAxis = vec3(*model, "rotation_axis", s.modelAxis);

@@ -12,7 +12,7 @@ struct SceneFile {
   std::filesystem::path path;
   std::string name;  // the file name without .toml
   std::string description;
-  std::string shape;  // "sphere", "torus" or "sweep"
+  std::string shape;  // "sphere", "torus", "sweep" or "fullscreen"
   // Shape parameters: sphere stacks/slices; torus major_radius, minor_radius,
   // rings, sides; sweep count, seed. Absent ones stay 0.
   int stacks = 0, slices = 0, rings = 0, sides = 0, count = 0;

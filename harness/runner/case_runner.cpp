@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/scene_file.h"
+#include "runner/fragment_vector_check.h"
 
 namespace snell {
 namespace {
@@ -74,11 +75,24 @@ CaseResult CaseRunner::run(const Case& c) {
   result.sourceWhere = m.source.where;
   result.driver = driver_;
 
+  if (const auto reason = m.notSupported.find(backend_.name()); reason != m.notSupported.end()) {
+    result.status = Status::NotSupported;
+    result.message = reason->second;
+    result.seconds = secondsSince(start);
+    return result;
+  }
   const ResolvedBindings bindings = resolveBindings(m, scenes_.get(c.spec.scene));
   result.vertices = bindings.vertexCount;
   try {
-    if (c.spec.has("vectors")) runVectors(c, bindings, result);
-    if (c.spec.has("image") && result.status != Status::CompileError) runImage(c, bindings, result);
+    if (m.expect == Expectation::CompileError) {
+      runExpectedCompileError(c, result);
+    } else {
+      if (c.spec.has("vectors") && !m.captureVertex.empty()) runVectors(c, bindings, result);
+      if (c.spec.has("vectors") && !m.captureFragment.empty() &&
+          result.status != Status::CompileError)
+        runFragmentVectors(c, bindings, result);
+      if (c.spec.has("image") && result.status != Status::CompileError) runImage(c, bindings, result);
+    }
   } catch (const SetupError& error) {
     result.status = Status::Fail;
     result.message += fmt::format("backend error: {}\n", error.what());
@@ -105,6 +119,49 @@ void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, Cas
     result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
   if (result.componentsFailed()) result.status = worstOf(result.status, Status::Fail);
   result.message += describeFailures(result.varyings);
+}
+
+// A listing kept as published although it does not compile: it passes as
+// ExpectedCompileError when the driver refuses it, with the diagnostic
+// quoted, and fails when the driver takes it.
+void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
+  const auto backendStart = std::chrono::steady_clock::now();
+  const CompileOutcome outcome = backend_.compile(loadProgram(*c.manifest));
+  result.backendSeconds += secondsSince(backendStart);
+  result.compileLog = outcome.log;
+  if (outcome.ok) {
+    result.status = Status::Fail;
+    result.message = "compiled, but the listing as published is expected not to compile "
+                     "(`expect = \"compile-error\"`)" +
+                     (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
+    return;
+  }
+  result.status = Status::ExpectedCompileError;
+  result.message = "does not compile, as expected:\n" + outcome.log;
+}
+
+void CaseRunner::runFragmentVectors(const Case& c, const ResolvedBindings& bindings,
+                                    CaseResult& result) {
+  const Scene& scene = scenes_.get(c.spec.scene);
+  const auto backendStart = std::chrono::steady_clock::now();
+  FragmentVectorCheck check = checkFragmentVectors(backend_, *c.manifest, scene, bindings);
+  result.backendSeconds += secondsSince(backendStart) - check.oracleSeconds;
+  result.oracleSeconds += check.oracleSeconds;
+  if (!check.compiled) {
+    result.status = Status::CompileError;
+    result.compileLog = check.compileLog;
+    result.message = check.compileLog;
+    return;
+  }
+  result.vertices = check.pixels;
+  for (VaryingCheck& varying : check.varyings) result.varyings.push_back(std::move(varying));
+  if (result.componentsFailed() || !check.unwritten.empty())
+    result.status = worstOf(result.status, Status::Fail);
+  if (check.pixels == 0) {
+    result.status = worstOf(result.status, Status::Fail);
+    result.message += "no pixel wrote every value the oracle reads: nothing was checked\n";
+  }
+  result.message += check.unwritten + check.failures;
 }
 
 void CaseRunner::runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {

@@ -52,6 +52,8 @@ class CaseRunner {
 
  private:
   void runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
+  void runFragmentVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
+  void runExpectedCompileError(const Case& c, CaseResult& result);
   void runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
 
 

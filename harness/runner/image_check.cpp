@@ -52,10 +52,7 @@ std::vector<PixelMask> maskFromImage(const Image& image) {
   return mask;
 }
 
-ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
-                      const ResolvedBindings& bindings, const ReferenceImage& reference,
-                      const ImageCheckOptions& options) {
-  const Manifest& m = *c.manifest;
+RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBindings& bindings) {
   RenderJob job;
   job.program = loadProgram(m);
   job.uniforms = bindings.uniforms;
@@ -64,7 +61,13 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
   job.cubeMaps = environmentBindings(m, scene);
   job.width = scene.width;
   job.height = scene.height;
-  const RenderOutcome outcome = backend.render(job);
+  return job;
+}
+
+ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
+                      const ResolvedBindings& bindings, const ReferenceImage& reference,
+                      const ImageCheckOptions& options) {
+  const RenderOutcome outcome = backend.render(sceneRenderJob(*c.manifest, scene, bindings));
   ImageCheck check;
   if (!outcome.compile.ok) {
     check.compiled = false;

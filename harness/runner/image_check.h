@@ -47,6 +47,10 @@ std::filesystem::path maskImagePath(const std::filesystem::path& outDir, const s
 Image maskAsImage(const ReferenceImage& reference);
 std::vector<PixelMask> maskFromImage(const Image& image);
 
+// The render of a case's scene: its program as published, the bound values,
+// the scene's triangles, environment and image size.
+RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBindings& bindings);
+
 ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                       const ResolvedBindings& bindings, const ReferenceImage& reference,
                       const ImageCheckOptions& options);

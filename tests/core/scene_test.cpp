@@ -124,3 +124,26 @@ TEST(Scene, UnknownSceneListsKnownOnes) {
 
 }  // namespace
 }  // namespace snell
+
+namespace snell {
+namespace {
+
+// The full-screen pass covers every pixel centre with one triangle, and
+// gives Shadertoy's iResolution as the image size.
+TEST(Scene, FullscreenCoversTheViewportAndGivesTheResolution) {
+  const Scene s = makeScene("fullscreen");
+  ASSERT_TRUE(s.draws());
+  EXPECT_EQ(s.indices.size(), 3u);
+  const std::vector<float>& p = s.attributes.at("position").data;
+  // Clip-space corners (-1,-1), (3,-1), (-1,3): the triangle's hypotenuse
+  // x + y = 2 lies outside the square [-1, 1]^2, so all of it is covered.
+  EXPECT_EQ((std::vector<float>{p[0], p[1], p[4], p[5], p[8], p[9]}),
+            (std::vector<float>{-1, -1, 3, -1, -1, 3}));
+  const Value& resolution = s.values.at("resolution");
+  EXPECT_EQ(resolution.type, ValueType::Vec3);
+  EXPECT_EQ(resolution.data, (std::vector<float>{static_cast<float>(s.width),
+                                                 static_cast<float>(s.height), 1.0f}));
+}
+
+}  // namespace
+}  // namespace snell

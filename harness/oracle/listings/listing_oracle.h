@@ -32,6 +32,14 @@ class ListingOracle final : public VertexOracle {
     return names;
   }
 
+  std::vector<std::string> inputs() const override {
+    std::vector<std::string> names;
+    for (const InterfaceEntry& entry : interface_.entries()) {
+      if (entry.kind == InterfaceEntry::Kind::Input) names.push_back(entry.name);
+    }
+    return names;
+  }
+
   std::vector<OracleVarying> evaluate(const OracleInput& input) const override {
     checkOracleInput(name_, interface_.entries(), input);
     std::vector<OracleVarying> varyings = emptyVaryings(input.vertexCount);

@@ -1,0 +1,140 @@
+#include "runner/fragment_vector_check.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/errors.h"
+#include "oracle/vertex_oracle.h"
+#include "runner/image_check.h"
+
+namespace snell {
+namespace {
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+void checkCapturesAgainstOracle(const Manifest& m, const VertexOracle& oracle) {
+  const std::vector<std::string> inputs = oracle.inputs(), outputs = oracle.outputs();
+  bool anyOutput = false;
+  for (const FragmentCapture& capture : m.captureFragment) {
+    if (contains(outputs, capture.name)) anyOutput = true;
+    else if (!contains(inputs, capture.name))
+      throw UsageError(fmt::format(
+          "{}:{}: capture `{}` is neither an input nor an output of oracle `{}` (inputs: {}; "
+          "outputs: {}); capture only what the oracle reads or computes",
+          m.path.string(), capture.manifestLine, capture.name, m.oracle, fmt::join(inputs, ", "),
+          fmt::join(outputs, ", ")));
+  }
+  for (const std::string& input : inputs)
+    if (std::none_of(m.captureFragment.begin(), m.captureFragment.end(),
+                     [&](const FragmentCapture& c) { return c.name == input; }))
+      throw UsageError(fmt::format("{}:{}: oracle `{}` reads `{}`; capture it in "
+                                   "`capture.fragment` at a line where it holds its value",
+                                   m.path.string(), m.captureLine, m.oracle, input));
+  if (!anyOutput)
+    throw UsageError(fmt::format("{}:{}: `capture.fragment` reads none of oracle `{}`'s outputs "
+                                 "({}), so nothing would be checked",
+                                 m.path.string(), m.captureLine, m.oracle, fmt::join(outputs, ", ")));
+}
+
+struct Pixel {
+  int x = 0, y = 0;
+};
+
+// The values of one probe at the chosen pixels, packed as the oracle reads them.
+std::vector<float> valuesAt(const Image& probe, const std::vector<Pixel>& pixels, int components) {
+  std::vector<float> data;
+  data.reserve(pixels.size() * static_cast<std::size_t>(components));
+  for (const Pixel& p : pixels) {
+    const float* texel = probe.at(p.x, p.y);
+    data.insert(data.end(), texel, texel + components);
+  }
+  return data;
+}
+
+std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels) {
+  std::string text = fmt::format("{}: {} of {} components outside the spec interval\n", v.name,
+                                 v.failed, v.checked);
+  for (const ComponentFailure& f : v.firstFailures) {
+    const Pixel& p = pixels.at(f.vertex);
+    text += fmt::format("  pixel ({}, {}) [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]\n",
+                        p.x, p.y, f.component, f.observed, f.reference, f.lo, f.hi);
+  }
+  return text;
+}
+
+}  // namespace
+
+FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
+                                         const ResolvedBindings& bindings) {
+  if (!scene.draws())
+    throw UsageError(fmt::format("{}: scene `{}` draws nothing, so no fragment runs; "
+                                 "`capture.fragment` needs a scene with [image]",
+                                 m.path.string(), scene.name));
+  const std::unique_ptr<VertexOracle> oracle = makeVertexOracle(m.oracle);
+  checkCapturesAgainstOracle(m, *oracle);
+
+  RenderJob job = sceneRenderJob(m, scene, bindings);
+  for (const FragmentCapture& capture : m.captureFragment)
+    job.probes.push_back({capture.name, capture.type, capture.line});
+  const RenderOutcome outcome = backend.render(job);
+  FragmentVectorCheck check;
+  if (!outcome.compile.ok) {
+    check.compiled = false;
+    check.compileLog = outcome.compile.log;
+    return check;
+  }
+
+  // Checked: the pixels where every input was read (alpha 1 marks a write).
+  const std::vector<std::string> inputNames = oracle->inputs();
+  std::vector<Pixel> pixels;
+  for (int y = 0; y < scene.height; ++y)
+    for (int x = 0; x < scene.width; ++x) {
+      bool allRead = true;
+      for (std::size_t k = 0; k < m.captureFragment.size(); ++k)
+        if (contains(inputNames, m.captureFragment[k].name) && outcome.probes[k].at(x, y)[3] != 1.0f)
+          allRead = false;
+      if (allRead) pixels.push_back({x, y});
+    }
+  check.pixels = pixels.size();
+
+  AttributeMap inputs;
+  std::vector<CapturedVarying> observed;
+  for (std::size_t k = 0; k < m.captureFragment.size(); ++k) {
+    const FragmentCapture& capture = m.captureFragment[k];
+    const int components = componentCount(capture.type);
+    std::vector<float> values = valuesAt(outcome.probes[k], pixels, components);
+    if (contains(inputNames, capture.name)) {
+      inputs[capture.name] = AttributeStream{capture.name, components, std::move(values)};
+      continue;
+    }
+    const std::size_t missing = static_cast<std::size_t>(
+        std::count_if(pixels.begin(), pixels.end(),
+                      [&](const Pixel& p) { return outcome.probes[k].at(p.x, p.y)[3] != 1.0f; }));
+    if (missing)
+      check.unwritten += fmt::format("{}: not written at {} of the {} pixels where the oracle's "
+                                     "inputs were (line {} did not run there)\n",
+                                     capture.name, missing, pixels.size(), capture.line);
+    observed.push_back(CapturedVarying{capture.name, components, std::move(values)});
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<OracleVarying> expected =
+      oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size()});
+  check.oracleSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const CapturedVarying& values : observed) {
+    const auto found = std::find_if(expected.begin(), expected.end(),
+                                    [&](const OracleVarying& v) { return v.name == values.name; });
+    VaryingCheck varying = checkVarying(*found, values);
+    if (varying.failed) check.failures += describe(varying, pixels);
+    check.varyings.push_back(std::move(varying));
+  }
+  return check;
+}
+
+}  // namespace snell

@@ -1,0 +1,34 @@
+#pragma once
+// The vector half of a fragment-stage listing: render the scene with the
+// manifest's probes (core/fragment_probes.h), feed the oracle, pixel by
+// pixel, the values read back at the probes it names as inputs, and hold
+// the values at the probes it names as outputs against its intervals.
+// Starting from the driver's own values at the inputs keeps interpolation
+// out of the check: the listing's lines are what is under test.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "backends/backend.h"
+#include "compare/vector_check.h"
+#include "core/case.h"
+
+namespace snell {
+
+struct FragmentVectorCheck {
+  bool compiled = true;
+  std::string compileLog;
+  std::size_t pixels = 0;              // where every input probe was written
+  std::vector<VaryingCheck> varyings;  // one per captured oracle output
+  std::string failures;                // first failing components, by pixel
+  std::string unwritten;               // output probes missing where the inputs were written
+  double oracleSeconds = 0;
+};
+
+// Throws UsageError "MANIFEST:LINE: ..." when a capture is neither an input
+// nor an output of the oracle, an oracle input is not captured, or the
+// scene draws nothing.
+FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
+                                         const ResolvedBindings& bindings);
+
+}  // namespace snell
