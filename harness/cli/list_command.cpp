@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "core/case.h"
+#include "core/status.h"
 
 namespace snell::cli {
 
@@ -22,14 +23,28 @@ Command addListCommand(CLI::App& app) {
     const std::vector<Case> cases = expandCases(manifests, options->filter);
     std::size_t width = 4;
     for (const Case& c : cases) width = std::max(width, c.id.size());
-    fmt::print("{:<{}}  {:<8}  {:<8}  {:<13}  {:<22}  {}\n", "case", width, "backends", "expected",
-               "checks", "oracle", "source");
-    for (const Case& c : cases)
-      fmt::print("{:<{}}  {:<8}  {:<8}  {:<13}  {:<22}  {} ({})\n", c.id, width, "gl,vk", "Pass",
-                 fmt::format("{}", fmt::join(c.spec.checks, ",")), c.manifest->oracle,
-                 c.manifest->source.file, c.manifest->source.where);
+    fmt::print("{:<{}}  {:<8}  {:<20}  {:<8}  {:<13}  {:<26}  {}\n", "case", width, "backends",
+               "expected", "stage", "checks", "oracle", "source");
+    for (const Case& c : cases) {
+      const Manifest& m = *c.manifest;
+      std::vector<std::string> backends;
+      for (const char* backend : {"gl", "vk"})
+        if (!m.notSupported.count(backend)) backends.emplace_back(backend);
+      const char* stage = m.expect == Expectation::CompileError ? "-"
+                          : m.captureFragment.empty()           ? "vertex"
+                                                                : "fragment";
+      fmt::print("{:<{}}  {:<8}  {:<20}  {:<8}  {:<13}  {:<26}  {} ({})\n", c.id, width,
+                 fmt::format("{}", fmt::join(backends, ",")),
+                 statusName(m.expect == Expectation::CompileError ? Status::ExpectedCompileError
+                                                                  : Status::Pass),
+                 stage, fmt::format("{}", fmt::join(c.spec.checks, ",")), m.oracle, m.source.file,
+                 m.source.where);
+    }
     std::set<const Manifest*> listings;
     for (const Case& c : cases) listings.insert(c.manifest);
+    for (const Manifest* m : listings)
+      for (const auto& [backend, reason] : m->notSupported)
+        fmt::print("{}: NotSupported on {}: {}\n", m->id, backend, reason);
     fmt::print("{} cases from {} listings\n", cases.size(), listings.size());
     return 0;
   };

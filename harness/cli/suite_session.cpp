@@ -16,6 +16,7 @@
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
 #include "runner/cross_api_check.h"
+#include "runner/fragment_vector_check.h"
 #include "runner/supervisor.h"
 
 namespace snell::cli {
@@ -46,6 +47,17 @@ void validateCases(const std::vector<Case>& cases, const std::string& shaders) {
       makeVertexOracle(m.oracle);
     } catch (const UsageError& error) {
       atLine(m, m.oracleLine, error.what());
+    }
+    if (c.spec.has("vectors")) {
+      try {
+        checkFragmentCaptures(m, program, *scene);
+      } catch (const UsageError& error) {
+        // Errors about the program or the oracle carry their own place.
+        const std::string what = error.what();
+        if (what.rfind(m.path.string() + ":", 0) == 0 || what.rfind(program.fragmentPath + ":", 0) == 0)
+          throw;
+        atLine(m, c.spec.line, what);
+      }
     }
     if (c.spec.has("image")) {
       if (!scene->draws())

@@ -38,8 +38,10 @@ class VertexOracle {
   // The outputs it computes (GLSL names), in the order evaluate() returns them.
   virtual std::vector<std::string> outputs() const = 0;
   // The per-invocation inputs it reads (GLSL names): vertex attributes, or
-  // for a fragment listing the values read back at its probes.
-  virtual std::vector<std::string> inputs() const = 0;
+  // for a fragment listing the values read back at its probes. An oracle
+  // that reads the scene only (vertex listings with fixed-function inputs)
+  // may leave it empty.
+  virtual std::vector<std::string> inputs() const { return {}; }
   // Throws UsageError when a uniform, constant or attribute it needs is missing
   // or has the wrong type.
   virtual std::vector<OracleVarying> evaluate(const OracleInput& input) const = 0;

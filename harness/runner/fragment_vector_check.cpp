@@ -67,20 +67,38 @@ std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels) {
   return text;
 }
 
+std::vector<FragmentProbe> probesOf(const Manifest& m) {
+  std::vector<FragmentProbe> probes;
+  for (const FragmentCapture& capture : m.captureFragment)
+    probes.push_back({capture.name, capture.type, capture.line});
+  return probes;
+}
+
+void requireDrawingScene(const Manifest& m, const Scene& scene) {
+  if (!scene.draws())
+    throw UsageError(fmt::format("scene `{}` draws nothing, so no fragment runs; "
+                                 "`capture.fragment` of {} needs a scene with [image]",
+                                 scene.name, m.id));
+}
+
 }  // namespace
+
+void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, const Scene& scene) {
+  if (m.captureFragment.empty()) return;
+  requireDrawingScene(m, scene);
+  checkCapturesAgainstOracle(m, *makeVertexOracle(m.oracle));
+  insertFragmentProbes(program.fragment, program.fragmentPath, probesOf(m),
+                       ProbeOutputStyle::Outputs);
+}
 
 FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
                                          const ResolvedBindings& bindings) {
-  if (!scene.draws())
-    throw UsageError(fmt::format("{}: scene `{}` draws nothing, so no fragment runs; "
-                                 "`capture.fragment` needs a scene with [image]",
-                                 m.path.string(), scene.name));
+  requireDrawingScene(m, scene);
   const std::unique_ptr<VertexOracle> oracle = makeVertexOracle(m.oracle);
   checkCapturesAgainstOracle(m, *oracle);
 
   RenderJob job = sceneRenderJob(m, scene, bindings);
-  for (const FragmentCapture& capture : m.captureFragment)
-    job.probes.push_back({capture.name, capture.type, capture.line});
+  job.probes = probesOf(m);
   const RenderOutcome outcome = backend.render(job);
   FragmentVectorCheck check;
   if (!outcome.compile.ok) {

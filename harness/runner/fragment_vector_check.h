@@ -25,6 +25,13 @@ struct FragmentVectorCheck {
   double oracleSeconds = 0;
 };
 
+// Throws UsageError "FILE:LINE: ..." when the fragment captures do not fit
+// the listing: a capture that is neither an input nor an output of the
+// oracle, an oracle input not captured, no output captured, a probe line
+// outside main() or not ending a statement, a scene that draws nothing.
+// Run before any driver loads.
+void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, const Scene& scene);
+
 // Throws UsageError "MANIFEST:LINE: ..." when a capture is neither an input
 // nor an output of the oracle, an oracle input is not captured, or the
 // scene draws nothing.
