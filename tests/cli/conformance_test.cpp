@@ -40,12 +40,25 @@ struct Param {
 
 class ConformanceCase : public ::testing::TestWithParam<Param> {};
 
-TEST_P(ConformanceCase, PassesAgainstTheOracle) {
+// Each case ends as its manifest expects: Pass against the oracle, or
+// ExpectedCompileError with a diagnostic, or NotSupported with its reason.
+TEST_P(ConformanceCase, EndsAsItsManifestExpects) {
   Conformance& all = Conformance::get();
   const Case& c = all.cases.at(GetParam().index);
   CaseRunner runner(all.backend(GetParam().backend), all.oracles, all.scenes, all.references,
                     ImageCheckOptions{all.outDir, SNELL_SOURCE_ROOT "/golden"});
   const CaseResult result = runner.run(c);
+  const Manifest& m = *c.manifest;
+  if (m.notSupported.count(GetParam().backend)) {
+    EXPECT_EQ(result.status, Status::NotSupported) << result.message;
+    EXPECT_EQ(result.message, m.notSupported.at(GetParam().backend));
+    return;
+  }
+  if (m.expect == Expectation::CompileError) {
+    EXPECT_EQ(result.status, Status::ExpectedCompileError) << result.message;
+    EXPECT_FALSE(result.compileLog.empty());  // the diagnostic the report quotes
+    return;
+  }
   EXPECT_EQ(result.status, Status::Pass) << result.message;
   EXPECT_GT(result.componentsChecked(), 1000u);  // thousands of values, not a handful
   RecordProperty("worst_slack", std::to_string(result.worstSlack()));
