@@ -34,12 +34,19 @@ int run(const SuiteOptions& options, const std::string& junit) {
 
   printSummaryTable(std::cout, results);
   printThroughput(results);
+  // Failures first, with why; then what passes with a story to tell: the
+  // diagnostics of listings that must not compile, and why a backend is
+  // not supported.
   bool failed = false;
   for (const CaseResult& r : results) {
     if (!isFailure(r.status)) continue;
     failed = true;
     fmt::print("\n{} on {}: {}\n{}", r.caseId, r.backend, statusName(r.status), r.message);
   }
+  for (const CaseResult& r : results)
+    if (r.status == Status::ExpectedCompileError || r.status == Status::NotSupported)
+      fmt::print("\n{} on {}: {}: {}{}", r.caseId, r.backend, statusName(r.status), r.message,
+                 r.message.empty() || r.message.back() != '\n' ? "\n" : "");
   return failed ? 1 : 0;
 }
 

@@ -33,9 +33,12 @@ std::string toJUnitXml(const std::vector<CaseResult>& results) {
       test.append_child("skipped").append_attribute("message") = r.message.c_str();
     }
     test.append_child("system-out").append_child(pugi::node_pcdata).set_value(
-        fmt::format("status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
-                    statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
-                    r.worstSlack(), r.driver.apiVersion, r.driver.renderer)
+        (fmt::format("status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
+                     statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
+                     r.worstSlack(), r.driver.apiVersion, r.driver.renderer) +
+         // A listing kept as published that must not compile: its diagnostic
+         // is the result.
+         (r.status == Status::ExpectedCompileError ? "\n" + r.message : std::string()))
             .c_str());
   }
   for (auto& [backend, suite] : byBackend) {
