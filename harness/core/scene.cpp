@@ -10,6 +10,7 @@
 #include <set>
 
 #include "core/camera_math.h"
+#include "core/decal.h"
 #include "core/environment.h"
 #include "core/errors.h"
 #include "core/scene_file.h"
@@ -44,7 +45,7 @@ void addCameraValues(Scene& scene, const SceneFile& file) {
       rotation({file.environmentAxis[0], file.environmentAxis[1], file.environmentAxis[2]},
                radians(file.environmentDegrees)));
   scene.values["texture_matrix"] = toMat4Value(environment);
-  scene.samplers = {"environment"};
+  scene.samplers = {"environment", "decal"};
 }
 
 void addVertex(AttributeStream& position, AttributeStream& normal, const Vec3d& p, const Vec3d& n) {
@@ -56,6 +57,13 @@ void addVertex(AttributeStream& position, AttributeStream& normal, const Vec3d& 
 // The per-vertex tangent: a unit vector perpendicular to the normal.
 void addTangent(AttributeStream& tangent, const Vec3d& t) {
   for (double c : t) tangent.data.push_back(static_cast<float>(c));
+}
+
+// The grid's (u, v) in [0, 1]: the seam column and the last row repeat the
+// first at u = 1 and v = 1, so no triangle's coordinates wrap.
+void addTexcoord(AttributeStream& texcoord, double u, double v) {
+  texcoord.data.push_back(static_cast<float>(u));
+  texcoord.data.push_back(static_cast<float>(v));
 }
 
 // A (rows + 1) x (columns + 1) vertex grid wrapped onto a surface: two
@@ -79,6 +87,7 @@ void gridTriangles(Scene& scene, int rows, int columns, bool skipFirstRow, bool 
 
 void sphere(Scene& scene, const SceneFile& file) {
   AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
+  AttributeStream texcoord{"texcoord", 2, {}};
   for (int stack = 0; stack <= file.stacks; ++stack) {
     const double theta = kPi * stack / file.stacks;
     for (int slice = 0; slice <= file.slices; ++slice) {
@@ -87,16 +96,20 @@ void sphere(Scene& scene, const SceneFile& file) {
       addVertex(position, normal, n, n);
       // d/dphi, normalised: along the parallel, defined at the poles too.
       addTangent(tangent, {-std::sin(phi), 0.0, std::cos(phi)});
+      addTexcoord(texcoord, static_cast<double>(slice) / file.slices,
+                  static_cast<double>(stack) / file.stacks);
     }
   }
   gridTriangles(scene, file.stacks, file.slices, true, true);
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
   scene.attributes["tangent"] = std::move(tangent);
+  scene.attributes["texcoord"] = std::move(texcoord);
 }
 
 void torus(Scene& scene, const SceneFile& file) {
   AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
+  AttributeStream texcoord{"texcoord", 2, {}};
   for (int ring = 0; ring <= file.rings; ++ring) {
     const double u = 2 * kPi * ring / file.rings;
     for (int side = 0; side <= file.sides; ++side) {
@@ -110,12 +123,15 @@ void torus(Scene& scene, const SceneFile& file) {
       addVertex(position, normal, p, n);
       // Along the ring (d/du, normalised), perpendicular to n.
       addTangent(tangent, {-std::sin(u), 0.0, std::cos(u)});
+      addTexcoord(texcoord, static_cast<double>(ring) / file.rings,
+                  static_cast<double>(side) / file.sides);
     }
   }
   gridTriangles(scene, file.rings, file.sides, false, false);
   scene.attributes["position"] = std::move(position);
   scene.attributes["normal"] = std::move(normal);
   scene.attributes["tangent"] = std::move(tangent);
+  scene.attributes["texcoord"] = std::move(texcoord);
 }
 
 void sweep(Scene& scene, const SceneFile& file) {
@@ -179,6 +195,7 @@ Scene build(const SceneFile& file) {
     scene.width = file.width;
     scene.height = file.height;
     scene.environment = std::make_shared<const CubeMap>(makeEnvironment(file.environmentSize));
+    scene.decal = std::make_shared<const Image>(makeDecal());
     // Shadertoy's iResolution: the viewport in pixels, and a pixel aspect of 1.
     scene.values["resolution"] = Value{ValueType::Vec3, {static_cast<float>(file.width),
                                                          static_cast<float>(file.height), 1.0f}};

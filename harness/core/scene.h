@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/cube_map.h"
+#include "core/image.h"
 #include "core/values.h"
 
 namespace snell {
@@ -17,15 +18,20 @@ struct Scene {
   std::string name;
   std::string description;
   UniformMap values;          // "model", "modelview", "modelview_projection", "normal_matrix", ...
-  AttributeMap attributes;    // "position" (vec4), "normal" (vec3)
-  std::vector<std::string> samplers;  // semantics bound to textures ("environment")
+  // "position" (vec4), "normal" (vec3), "tangent" (vec3); on the sphere and
+  // the torus also "texcoord" (vec2, the grid's (u, v) in [0, 1]), which the
+  // sweep and the full-screen pass have no surface to give, so they omit it.
+  AttributeMap attributes;
+  std::vector<std::string> samplers;  // semantics bound to textures ("environment", "decal")
   std::size_t vertexCount = 0;
   // Scenes that draw: a triangle list (counter-clockwise front faces), the
-  // image size, and the environment bound to `samplers`.
+  // image size, and the environment (samplerCube) and decal (sampler2D)
+  // bound to `samplers` (core/environment.h, core/decal.h).
   std::vector<std::uint32_t> indices;
   int width = 0;
   int height = 0;
   std::shared_ptr<const CubeMap> environment;
+  std::shared_ptr<const Image> decal;
   bool draws() const { return !indices.empty(); }
 };
 
