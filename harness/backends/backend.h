@@ -55,6 +55,12 @@ struct RenderJob {
   AttributeMap attributes;              // by GLSL name
   std::vector<std::uint32_t> indices;   // triangle list, counter-clockwise front faces
   std::map<std::string, const CubeMap*> cubeMaps;  // samplerCube uniforms by GLSL name
+  // sampler2D uniforms by GLSL name. Base level only, LINEAR filtering and
+  // REPEAT wrapping in s and t (the CPU reference, oracle/reference/
+  // texture_2d_sampling.h, samples the same way); texel (i, j) is
+  // image.at(i, j), covering s in [i/width, (i+1)/width] and t in
+  // [j/height, (j+1)/height]: row j is uploaded as the texture's row j.
+  std::map<std::string, const Image*> textures2D;
   int width = 256;
   int height = 256;
   std::array<float, 4> clearColor{0, 0, 0, 0};

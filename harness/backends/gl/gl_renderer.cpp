@@ -44,7 +44,7 @@ std::size_t vertexCountOf(const std::vector<std::uint32_t>& indices) {
 
 // Binds what a render draws with and puts back, whichever way the render
 // leaves, the state captures and compile checks assume: no program, vertex
-// array, framebuffer or textures bound, depth test and culling off.
+// array, framebuffer or textures (cube or 2D) bound, depth test and culling off.
 class RenderStateGuard {
  public:
   RenderStateGuard(GLuint program, GLuint vertexArray, GLuint framebuffer, int textureUnits)
@@ -59,6 +59,7 @@ class RenderStateGuard {
     for (int unit = textureUnits_ - 1; unit >= 0; --unit) {
       glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
       glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+      glBindTexture(GL_TEXTURE_2D, 0);
     }
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
@@ -95,7 +96,7 @@ void setRasterState(const RenderJob& job) {
   throwOnGlError("setting the render state (viewport, depth test, culling, clear values)");
 }
 
-void bindCubeMaps(const GlCubeSamplerPlan& plan, GlCubeTextures& textures) {
+void bindCubeMaps(const GlSamplerPlan& plan, GlCubeTextures& textures) {
   textures.beginJob();
   for (std::size_t unit = 0; unit < plan.bindings.size(); ++unit) {
     textures.bind(*plan.bindings[unit].map, static_cast<int>(unit));
@@ -106,6 +107,18 @@ void bindCubeMaps(const GlCubeSamplerPlan& plan, GlCubeTextures& textures) {
   else
     glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
   throwOnGlError("binding cube map samplers (glUniform1i, GL_TEXTURE_CUBE_MAP_SEAMLESS)");
+}
+
+// 2D textures take the units after the cube maps.
+void bindTextures2D(const GlSamplerPlan& plan, GlTextures2D& textures) {
+  textures.beginJob();
+  const std::size_t first = plan.bindings.size();
+  for (std::size_t k = 0; k < plan.textures2D.size(); ++k) {
+    const auto unit = static_cast<int>(first + k);
+    textures.bind(*plan.textures2D[k].image, unit);
+    glUniform1i(plan.textures2D[k].location, static_cast<GLint>(unit));
+  }
+  throwOnGlError("binding 2D texture samplers (glBindTexture, glUniform1i)");
 }
 
 // The listing's target is cleared to the job's colour, each probe's to 0:
@@ -140,15 +153,17 @@ std::vector<Image> GlRenderer::run(GlLinkedProgram& program, const RenderJob& jo
   checkJob(program, job);
   const std::size_t vertexCount = vertexCountOf(job.indices);
   GlVertexInputs::check(program, job.attributes, vertexCount);
-  const GlCubeSamplerPlan samplers = planCubeSamplers(program.uniforms.samplers(), job.cubeMaps);
+  const GlSamplerPlan samplers =
+      planSamplers(program.uniforms.samplers(), job.cubeMaps, job.textures2D);
   const int colourTargets = 1 + static_cast<int>(job.probes.size());
   GlFramebuffer& target = framebuffers_.get(job.width, job.height, colourTargets);
 
   RenderStateGuard guard(program.program.id(), inputs_.vertexArray(), target.id(),
-                         static_cast<int>(samplers.bindings.size()));
+                         samplers.units());
   program.uniforms.apply(job.uniforms);
   throwOnGlError("glUniform*");
   bindCubeMaps(samplers, cubeTextures_);
+  bindTextures2D(samplers, textures2D_);
   inputs_.bindAttributes(program, job.attributes, vertexCount);
   inputs_.bindIndices(job.indices);
   setRasterState(job);

@@ -3,6 +3,7 @@
 #include "backends/gl/gl_cube_textures.h"
 #include "backends/gl/gl_framebuffer.h"
 #include "backends/gl/gl_program_cache.h"
+#include "backends/gl/gl_textures_2d.h"
 #include "backends/gl/gl_vertex_inputs.h"
 
 namespace snell {
@@ -25,6 +26,7 @@ class GlRenderer {
   GlVertexInputs& inputs_;
   GlFramebufferCache framebuffers_;
   GlCubeTextures cubeTextures_;
+  GlTextures2D textures2D_;
 };
 
 }  // namespace snell

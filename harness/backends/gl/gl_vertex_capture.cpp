@@ -1,6 +1,8 @@
 #include "backends/gl/gl_vertex_capture.h"
 
+#include <numeric>
 #include <string>
+#include <vector>
 
 #include "backends/gl/gl_error_check.h"
 #include "core/errors.h"
@@ -24,6 +26,22 @@ class CaptureStateGuard {
     glUseProgram(0);
   }
 };
+
+// A draw is an INVALID_OPERATION when samplers of different types share a
+// texture unit, and every sampler starts on unit 0, so a program with a
+// sampler2D and a samplerCube could not even be captured, though no
+// fragment runs: each sampler (each element of an array) gets a unit of
+// its own. Nothing is sampled, so nothing need be bound there.
+void separateSamplerUnits(const GlUniformTable& uniforms) {
+  GLint next = 0;
+  for (const GlUniformTable::Sampler& sampler : uniforms.samplers()) {
+    std::vector<GLint> units(static_cast<std::size_t>(sampler.arraySize));
+    std::iota(units.begin(), units.end(), next);
+    next += sampler.arraySize;
+    glUniform1iv(sampler.location, sampler.arraySize, units.data());
+  }
+  throwOnGlError("glUniform1iv (a texture unit for each sampler)");
+}
 }  // namespace
 
 GlVertexCapture::GlVertexCapture(GlVertexInputs& inputs) : inputs_(inputs) {
@@ -48,6 +66,7 @@ std::vector<CapturedVarying> GlVertexCapture::run(GlLinkedProgram& program,
   CaptureStateGuard guard(program.program.id(), inputs_.vertexArray());
   program.uniforms.apply(job.uniforms);
   throwOnGlError("glUniform*");
+  separateSamplerUnits(program.uniforms);
   inputs_.bindAttributes(program, job.attributes, job.vertexCount);
   const std::vector<float> records = drawAndRead(program, job.vertexCount);
   return program.varyings.split(records, job.vertexCount);

@@ -39,9 +39,10 @@ void describeOnce(std::map<std::uint32_t, ProgramDescriptor>& byBinding, const S
     descriptor.name = resource.name;
     descriptor.kind = resource.kind;
     descriptor.cube = resource.cube;
+    descriptor.plain2D = resource.plain2D;
     descriptor.binding = resource.binding;
   } else if (descriptor.name != resource.name || descriptor.kind != resource.kind ||
-             descriptor.cube != resource.cube) {
+             descriptor.cube != resource.cube || descriptor.plain2D != resource.plain2D) {
     throw SetupError("binding " + std::to_string(resource.binding) + " holds both '" +
                      descriptor.name + "' and, in the " + stage.name + " SPIR-V, '" +
                      resource.name + "'");

@@ -24,6 +24,7 @@ struct ProgramDescriptor {
   std::string name;
   DescriptorKind kind = DescriptorKind::Other;
   bool cube = false;
+  bool plain2D = false;       // sampler2D (spirv_resources.h)
   std::uint32_t binding = 0;  // in set 0
   bool inVertexStage = false;
   bool inFragmentStage = false;

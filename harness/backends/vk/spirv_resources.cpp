@@ -11,8 +11,11 @@ namespace snell::vk {
 namespace {
 
 struct ImageType {
+  std::uint32_t sampledType = 0;
   std::uint32_t dim = 0;
+  std::uint32_t depth = 0;
   bool arrayed = false;
+  bool multisampled = false;
 };
 
 struct Variable {
@@ -36,6 +39,7 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
   std::map<std::uint32_t, std::uint32_t> bindings;
   std::set<std::uint32_t> blocks;
   std::map<std::uint32_t, ImageType> images;
+  std::set<std::uint32_t> floats;                        // OpTypeFloat ids
   std::map<std::uint32_t, std::uint32_t> sampledImages;  // OpTypeSampledImage -> its image type
   std::vector<Variable> variables;
   for (const spirv::Instruction& inst : module.instructions) {
@@ -44,8 +48,10 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
       if (auto name = spirv::literalString(ops, 1)) names[ops[0]] = *name;
     } else if (inst.opcode == spv::OpTypePointer && ops.size() >= 3) {
       pointees[ops[0]] = ops[2];
-    } else if (inst.opcode == spv::OpTypeImage && ops.size() >= 5) {
-      images[ops[0]] = {ops[2], ops[4] != 0};
+    } else if (inst.opcode == spv::OpTypeFloat && ops.size() >= 1) {
+      floats.insert(ops[0]);
+    } else if (inst.opcode == spv::OpTypeImage && ops.size() >= 6) {
+      images[ops[0]] = {ops[1], ops[2], ops[3], ops[4] != 0, ops[5] != 0};
     } else if (inst.opcode == spv::OpTypeSampledImage && ops.size() >= 2) {
       sampledImages[ops[0]] = ops[1];
     } else if (inst.opcode == spv::OpDecorate && ops.size() >= 2) {
@@ -75,6 +81,8 @@ DescriptorResources listDescriptorResources(std::span<const std::uint32_t> spirv
       resource.kind = DescriptorKind::CombinedImageSampler;
       const ImageType image = images[sampledImages[pointee]];
       resource.cube = image.dim == spv::DimCube && !image.arrayed;
+      resource.plain2D = image.dim == spv::Dim2D && !image.arrayed && !image.multisampled &&
+                         image.depth == 0 && floats.count(image.sampledType) != 0;
     }
     result.resources.push_back(std::move(resource));
   }

@@ -22,6 +22,9 @@ struct DescriptorResource {
   std::uint32_t binding = 0;
   DescriptorKind kind = DescriptorKind::Other;
   bool cube = false;  // a CombinedImageSampler over a (non-arrayed) cube image: samplerCube
+  // A CombinedImageSampler over a float, non-arrayed, single-sampled,
+  // non-depth 2D image: sampler2D.
+  bool plain2D = false;
 };
 
 struct DescriptorResources {

@@ -215,6 +215,14 @@ class VkBackend final : public Backend {
       }
       draw.cubeMaps.push_back({sampler.name, sampler.binding, found->second});
     }
+    for (const SamplerBinding& sampler : prepared.textures2D) {
+      const auto found = job.textures2D.find(sampler.name);
+      if (found == job.textures2D.end() || !found->second) {
+        throw UsageError("the program samples 2D texture '" + sampler.name +
+                         "' but the render job gives none by that name");
+      }
+      draw.textures2D.push_back({sampler.name, sampler.binding, found->second});
+    }
     const std::size_t vertexCount =
         job.indices.empty()
             ? 0

@@ -48,10 +48,12 @@ std::unique_ptr<PreparedRender> prepareRender(const VulkanDevice& device, VkRend
       prepared->uniformBinding = descriptor.binding;
     } else if (descriptor.kind == DescriptorKind::CombinedImageSampler && descriptor.cube) {
       prepared->samplers.push_back({descriptor.name, descriptor.binding});
+    } else if (descriptor.kind == DescriptorKind::CombinedImageSampler && descriptor.plain2D) {
+      prepared->textures2D.push_back({descriptor.name, descriptor.binding});
     } else {
       throw UsageError(files + ": the program uses '" + descriptor.name +
-                       "'; a Vulkan render can bind only loose uniforms and samplerCube "
-                       "uniforms");
+                       "'; a Vulkan render can bind only loose uniforms, samplerCube and "
+                       "sampler2D uniforms");
     }
   }
   if (prepared->uniformBinding && !compiled.uniformBlock) {

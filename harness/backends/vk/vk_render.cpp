@@ -19,6 +19,7 @@ RenderRunner::RenderRunner(const VulkanDevice& device)
     : device_(device),
       commands_(device),
       cubeImages_(device, commands_),
+      textures2D_(device, commands_),
       targets_(kCachedTargets),
       uniforms_(device, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, 0),
       vertices_(device, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, 0),
@@ -43,6 +44,11 @@ std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
                      " cube maps; a Vulkan render binds at most " +
                      std::to_string(CubeImageCache::kCapacity));
   }
+  if (draw.textures2D.size() > Texture2DCache::kCapacity) {
+    throw UsageError("the program samples " + std::to_string(draw.textures2D.size()) +
+                     " 2D textures; a Vulkan render binds at most " +
+                     std::to_string(Texture2DCache::kCapacity));
+  }
   if (draw.indices.size() % 3 != 0 || draw.width == 0 || draw.height == 0) {
     throw SetupError("a render needs whole triangles and a non-empty target");
   }
@@ -50,6 +56,10 @@ std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
   for (const CubeMapBinding& cube : draw.cubeMaps) {
     const CubeImage& image = cubeImages_.get(*cube.map, cube.uniform);
     draw.descriptors->writeSampledImage(cube.binding, image.sampler(), image.view());
+  }
+  for (const Texture2DBinding& bound : draw.textures2D) {
+    const Texture2D& texture = textures2D_.get(*bound.image, bound.uniform);
+    draw.descriptors->writeSampledImage(bound.binding, texture.sampler(), texture.view());
   }
   if (draw.uniformBinding)
     draw.descriptors->writeUniformBuffer(*draw.uniformBinding, uniforms_.handle(),

@@ -23,6 +23,7 @@
 #include "backends/vk/vk_one_time_commands.h"
 #include "backends/vk/vk_render_pass.h"
 #include "backends/vk/vk_render_target.h"
+#include "backends/vk/vk_texture_2d_cache.h"
 #include "backends/vk/vk_vertex_input.h"
 #include "core/cube_map.h"
 #include "core/image.h"
@@ -35,12 +36,19 @@ struct CubeMapBinding {
   const CubeMap* map = nullptr;
 };
 
+struct Texture2DBinding {
+  std::string uniform;  // for messages
+  std::uint32_t binding = 0;
+  const Image* image = nullptr;
+};
+
 struct RenderDraw {
   VkPipeline pipeline = VK_NULL_HANDLE;
   const ProgramDescriptorSet* descriptors = nullptr;
   std::optional<std::uint32_t> uniformBinding;  // nullopt when the program has no uniform block
   std::size_t uniformBytes = 0;                 // as written through uniformBlock()
   std::vector<CubeMapBinding> cubeMaps;         // at most CubeImageCache::kCapacity
+  std::vector<Texture2DBinding> textures2D;     // at most Texture2DCache::kCapacity
   std::vector<VertexStream> streams;            // in pipeline binding order
   std::uint32_t vertexCount = 0;                // every index is below it
   std::span<const std::uint32_t> indices;       // a triangle list; empty: only clear
@@ -75,6 +83,7 @@ class RenderRunner {
   std::map<std::uint32_t, std::unique_ptr<RenderPass>> passes_;
   OneTimeCommands commands_;
   CubeImageCache cubeImages_;
+  Texture2DCache textures2D_;
   LruCache<RenderTarget> targets_;
   HostBuffer uniforms_;
   HostBuffer vertices_;

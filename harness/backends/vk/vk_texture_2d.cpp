@@ -1,0 +1,122 @@
+#include "backends/vk/vk_texture_2d.h"
+
+#include <cstring>
+#include <string>
+
+#include "backends/vk/vk_check.h"
+#include "core/errors.h"
+
+namespace snell::vk {
+
+namespace {
+
+constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
+
+VkImageCreateInfo imageInfo(const VulkanDevice& device, const Image& image) {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(device.physical(), kFormat, &properties);
+  const VkFormatFeatureFlags features = properties.optimalTilingFeatures;
+  const std::string renderer = device.driverInfo().renderer;
+  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0 ||
+      (features & VK_FORMAT_FEATURE_TRANSFER_DST_BIT) == 0) {
+    throw SetupError(renderer + " cannot sample VK_FORMAT_R32G32B32A32_SFLOAT images");
+  }
+  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) == 0) {
+    throw SetupError(renderer +
+                     " lacks VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT for "
+                     "VK_FORMAT_R32G32B32A32_SFLOAT, so it cannot filter a float 2D texture "
+                     "linearly");
+  }
+  VkImageCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = kFormat;
+  info.extent = {static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height),
+                 1};
+  info.mipLevels = 1;
+  info.arrayLayers = 1;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  return info;
+}
+
+VkImageMemoryBarrier layoutChange(VkImage image, VkImageLayout from, VkImageLayout to,
+                                  VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{};
+  barrier.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER;
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  return barrier;
+}
+
+}  // namespace
+
+Texture2D::Texture2D(const VulkanDevice& device, const Image& image, OneTimeCommands& commands,
+                     HostBuffer& staging)
+    : device_(device),
+      image_(device, imageInfo(device, image), VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT) {
+  VkSamplerCreateInfo info{};
+  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.minLod = 0.0f;
+  info.maxLod = 0.0f;
+  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
+  try {
+    upload(image, commands, staging);
+  } catch (...) {
+    vkDestroySampler(device_.handle(), sampler_, nullptr);
+    throw;
+  }
+}
+
+Texture2D::~Texture2D() { vkDestroySampler(device_.handle(), sampler_, nullptr); }
+
+void Texture2D::upload(const Image& image, OneTimeCommands& commands, HostBuffer& staging) {
+  const auto width = static_cast<std::uint32_t>(image.width);
+  const auto height = static_cast<std::uint32_t>(image.height);
+  const VkDeviceSize bytes = VkDeviceSize{width} * height * kTexelBytes;
+  staging.reserve(bytes);
+  // Image row j (image.at(i, j)) becomes texture row j, v in [j/height,
+  // (j+1)/height]: the same texel as OpenGL's and the CPU reference's.
+  std::memcpy(staging.data(), image.pixels.data(), bytes);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {width, height, 1};
+
+  const VkCommandBuffer recording = commands.begin();
+  const VkImageMemoryBarrier toTransfer =
+      layoutChange(image_.image(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   0, VK_ACCESS_TRANSFER_WRITE_BIT);
+  vkCmdPipelineBarrier(recording, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &toTransfer);
+  vkCmdCopyBufferToImage(recording, staging.handle(), image_.image(),
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  // Later submissions on the queue are in this barrier's second scope, so
+  // every render that samples the image waits for the copy.
+  const VkImageMemoryBarrier toShader =
+      layoutChange(image_.image(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                   VK_ACCESS_SHADER_READ_BIT);
+  vkCmdPipelineBarrier(recording, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                       0, 0, nullptr, 0, nullptr, 1, &toShader);
+  commands.submitAndWait("2D texture upload");
+}
+
+}  // namespace snell::vk
