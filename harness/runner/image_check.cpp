@@ -19,13 +19,23 @@ std::map<std::string, const CubeMap*> environmentBindings(const Manifest& m, con
   return out;
 }
 
+std::map<std::string, const Image*> decalBindings(const Manifest& m, const Scene& scene) {
+  std::map<std::string, const Image*> out;
+  for (const Binding& b : m.uniforms)
+    if (const auto* semantic = std::get_if<std::string>(&b.source);
+        semantic && *semantic == "decal" && scene.decal)
+      out[b.name] = scene.decal.get();
+  return out;
+}
+
 const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
                                           const ResolvedBindings& bindings) {
   if (auto it = images_.find(c.id); it != images_.end()) return it->second;
   const Manifest& m = *c.manifest;
   ReferenceInput input{m.oracle,        bindings.uniforms, m.constants,   bindings.attributes,
                        bindings.vertexCount, scene.indices, environmentBindings(m, scene),
-                       scene.width,     scene.height,      {0, 0, 0, 0},  true};
+                       scene.width,     scene.height,      {0, 0, 0, 0},  true,
+                       decalBindings(m, scene)};
   return images_.emplace(c.id, renderReferenceImage(input)).first->second;
 }
 
@@ -59,6 +69,7 @@ RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBi
   job.attributes = bindings.attributes;
   job.indices = scene.indices;
   job.cubeMaps = environmentBindings(m, scene);
+  job.textures2D = decalBindings(m, scene);
   job.width = scene.width;
   job.height = scene.height;
   return job;

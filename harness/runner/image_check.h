@@ -38,6 +38,9 @@ struct ImageCheck {
 // The samplerCube uniforms a manifest binds to the scene's environment.
 std::map<std::string, const CubeMap*> environmentBindings(const Manifest& m, const Scene& scene);
 
+// The sampler2D uniforms a manifest binds to the scene's decal.
+std::map<std::string, const Image*> decalBindings(const Manifest& m, const Scene& scene);
+
 // Where a backend's rendered image of a case is written.
 std::filesystem::path renderedImagePath(const std::filesystem::path& outDir,
                                         const std::string& caseId, const std::string& backend);
@@ -48,7 +51,7 @@ Image maskAsImage(const ReferenceImage& reference);
 std::vector<PixelMask> maskFromImage(const Image& image);
 
 // The render of a case's scene: its program as published, the bound values,
-// the scene's triangles, environment and image size.
+// the scene's triangles, environment, decal and image size.
 RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBindings& bindings);
 
 ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,

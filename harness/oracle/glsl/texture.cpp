@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "oracle/reference/cube_sampling.h"
+#include "oracle/reference/texture_2d_sampling.h"
 
 namespace snell::glsl {
 
@@ -24,6 +25,15 @@ vec4<double> texture(samplerCube& sampler, const vec3<double>& P) {
   if ((map.filter == CubeFilter::Nearest || !map.seamless) && nearCubeFaceEdge(direction))
     sampler.faceEdgeLookup = true;
   const Rgba value = sampleCube(map, direction);
+  return vec4<double>(value[0], value[1], value[2], value[3]);
+}
+
+vec4<double> texture(sampler2D& sampler, const vec2<double>& P) {
+  if (!std::isfinite(P[0]) || !std::isfinite(P[1])) {
+    sampler.undefinedLookup = true;
+    return splat<double, 4>(0.0);
+  }
+  const Rgba value = sampleTexture2D(*sampler.image, P[0], P[1]);
   return vec4<double>(value[0], value[1], value[2], value[3]);
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The adapter from the reference renderer to a fragment part mirrored line
 // by line: a struct with its GLSL globals as members (samplers as
-// glsl::samplerCube, inputs over double), `void main()`, and
-// `template <class V> void visit(V&)` naming its samplers, inputs and the
-// output FragColor. Double only: the image gate has explicit thresholds.
+// glsl::samplerCube or glsl::sampler2D, inputs and uniforms over double),
+// `void main()`, and `template <class V> void visit(V&)` naming its
+// samplers, uniforms, inputs and the colour output. Double only: the image
+// gate has explicit thresholds.
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -19,6 +20,11 @@ namespace snell::listings {
 class DescribeFragmentInterface {
  public:
   void sampler(const char* name, glsl::samplerCube&) { samplers_.emplace_back(name); }
+  void sampler(const char* name, glsl::sampler2D&) { samplers2D_.emplace_back(name); }
+  template <class X>
+  void uniform(const char* name, X&) {
+    uniforms_.push_back(FragmentUniform{name, glslTypeOf<X>()});
+  }
   template <class X>
   void input(const char* name, X&) {
     inputs_.push_back(FragmentInput{name, componentCount(glslTypeOf<X>())});
@@ -27,21 +33,35 @@ class DescribeFragmentInterface {
   void output(const char*, X&) {}
 
   const std::vector<FragmentInput>& inputs() const { return inputs_; }
+  const std::vector<FragmentUniform>& uniforms() const { return uniforms_; }
   const std::vector<std::string>& samplers() const { return samplers_; }
+  const std::vector<std::string>& samplers2D() const { return samplers2D_; }
 
  private:
   std::vector<FragmentInput> inputs_;
+  std::vector<FragmentUniform> uniforms_;
   std::vector<std::string> samplers_;
+  std::vector<std::string> samplers2D_;
 };
 
-// One fragment's inputs and samplers. Expects bindings for every sampler.
+// One fragment's inputs, uniforms and samplers. Expects checked bindings.
 class BindFragment {
  public:
-  BindFragment(std::span<const double> inputs, const CubeMapBindings& cubeMaps)
-      : inputs_(inputs), cubeMaps_(cubeMaps) {}
+  BindFragment(std::span<const double> inputs, const FragmentBindings& bindings)
+      : inputs_(inputs), bindings_(bindings) {}
 
   void sampler(const char* name, glsl::samplerCube& variable) {
-    variable = glsl::samplerCube{cubeMaps_.at(name)};
+    variable = glsl::samplerCube{bindings_.cubeMaps.at(name)};
+  }
+  void sampler(const char* name, glsl::sampler2D& variable) {
+    variable = glsl::sampler2D{bindings_.textures2D.at(name)};
+  }
+  // The float the backends got, exactly: a uniform is set once, not computed.
+  template <class X>
+  void uniform(const char* name, X& variable) {
+    const std::vector<float>& data = bindings_.uniforms.at(name).data;
+    std::size_t next = 0;
+    forEachComponent(variable, [&](double& component) { component = data[next++]; });
   }
   template <class X>
   void input(const char*, X& variable) {
@@ -52,7 +72,7 @@ class BindFragment {
 
  private:
   std::span<const double> inputs_;
-  const CubeMapBindings& cubeMaps_;
+  const FragmentBindings& bindings_;
   std::size_t next_ = 0;
 };
 
@@ -63,6 +83,11 @@ class ReadFragment {
     result_.undefined = result_.undefined || variable.undefinedLookup;
     result_.faceEdge = result_.faceEdge || variable.faceEdgeLookup;
   }
+  void sampler(const char*, glsl::sampler2D& variable) {
+    result_.undefined = result_.undefined || variable.undefinedLookup;
+  }
+  template <class X>
+  void uniform(const char*, X&) {}
   template <class X>
   void input(const char*, X&) {}
   void output(const char*, glsl::vec4<double>& fragColor) {
@@ -85,11 +110,14 @@ class FragmentListingOracle final : public FragmentOracle {
 
   std::vector<FragmentInput> inputs() const override { return interface_.inputs(); }
   std::vector<std::string> samplers() const override { return interface_.samplers(); }
+  std::vector<std::string> samplers2D() const override { return interface_.samplers2D(); }
+  std::vector<FragmentUniform> uniforms() const override { return interface_.uniforms(); }
 
+  using FragmentOracle::shade;
   FragmentResult shade(std::span<const double> inputs,
-                       const CubeMapBindings& cubeMaps) const override {
+                       const FragmentBindings& bindings) const override {
     Shader shader{};
-    BindFragment bind(inputs, cubeMaps);
+    BindFragment bind(inputs, bindings);
     shader.visit(bind);
     shader.main();
     ReadFragment read;

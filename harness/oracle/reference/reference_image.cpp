@@ -53,6 +53,37 @@ void checkCubeMaps(const ReferenceInput& input, const FragmentOracle& fragment) 
   }
 }
 
+void checkTextures2D(const ReferenceInput& input, const FragmentOracle& fragment) {
+  for (const std::string& name : fragment.samplers2D()) {
+    const auto found = input.textures2D.find(name);
+    if (found == input.textures2D.end() || found->second == nullptr)
+      throw UsageError(
+          fmt::format("oracle '{}': sampler2D {} has no 2D texture bound", input.oracle, name));
+    const Image& image = *found->second;
+    if (image.width <= 0 || image.height <= 0 ||
+        image.pixels.size() != static_cast<std::size_t>(image.width) * image.height * 4)
+      throw UsageError(fmt::format("oracle '{}': 2D texture {} is not {}x{} RGBA texels",
+                                   input.oracle, name, image.width, image.height));
+  }
+}
+
+void checkUniforms(const ReferenceInput& input, const FragmentOracle& fragment) {
+  for (const FragmentUniform& uniform : fragment.uniforms()) {
+    const auto found = input.uniforms.find(uniform.name);
+    if (found == input.uniforms.end())
+      throw UsageError(fmt::format("oracle '{}': the fragment part's uniform {} {} is not set",
+                                   input.oracle, glslTypeName(uniform.type), uniform.name));
+    const Value& value = found->second;
+    if (value.type != uniform.type ||
+        value.data.size() != static_cast<std::size_t>(componentCount(uniform.type)))
+      throw UsageError(
+          fmt::format("oracle '{}': uniform {} is a {} with {} floats, the fragment "
+                      "part declares {} {}",
+                      input.oracle, uniform.name, glslTypeName(value.type), value.data.size(),
+                      glslTypeName(uniform.type), uniform.name));
+  }
+}
+
 std::vector<ClipPosition> clipPositions(const std::string& oracle,
                                         const std::vector<OracleVarying>& varyings) {
   const OracleVarying& position = findVarying(oracle, varyings, kPositionOutput, 4);
@@ -115,6 +146,9 @@ ReferenceImage renderReferenceImage(const ReferenceInput& input) {
   const std::unique_ptr<FragmentOracle> fragment = makeFragmentOracle(input.oracle);
   const std::unique_ptr<VertexOracle> vertex = makeVertexOracle(input.oracle);
   checkCubeMaps(input, *fragment);
+  checkTextures2D(input, *fragment);
+  checkUniforms(input, *fragment);
+  const FragmentBindings bindings{input.cubeMaps, input.textures2D, input.uniforms};
   const std::vector<OracleVarying> varyings =
       vertex->evaluate({input.uniforms, input.constants, input.attributes, input.vertexCount});
   FragmentInputs inputs(input.oracle, *fragment, varyings);
@@ -138,7 +172,7 @@ ReferenceImage renderReferenceImage(const ReferenceInput& input) {
       const std::array<std::uint32_t, 3> vertices = {input.indices[first], input.indices[first + 1],
                                                      input.indices[first + 2]};
       const bool inputsDefined = inputs.gather(vertices, visibility.weights[pixel]);
-      const FragmentResult result = fragment->shade(inputs.values(), input.cubeMaps);
+      const FragmentResult result = fragment->shade(inputs.values(), bindings);
       const bool finite = finiteColor(result.color);
       for (int c = 0; c < 4; ++c) out[c] = finite ? static_cast<float>(result.color[c]) : 0.0f;
       // One reason per pixel, the strongest first: an undefined result is

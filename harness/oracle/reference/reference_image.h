@@ -2,8 +2,8 @@
 // The CPU reference image of a drawing listing: the same triangles
 // rasterised on the CPU with perspective-correct interpolation of the
 // listing's vertex outputs (from its vertex oracle, in double), then the
-// listing's fragment part evaluated per pixel with cube maps sampled as the
-// GL/Vulkan specs define. No graphics API in here.
+// listing's fragment part evaluated per pixel with cube maps and 2D textures
+// sampled as the GL/Vulkan specs define. No graphics API in here.
 #include <array>
 #include <cstdint>
 #include <map>
@@ -44,6 +44,8 @@ struct ReferenceInput {
   int height = 256;
   std::array<float, 4> clearColor{0, 0, 0, 0};
   bool cullBackFaces = true;
+  // sampler2D uniforms by GLSL name, sampled as RenderJob::textures2D says.
+  std::map<std::string, const Image*> textures2D{};
 };
 
 // Whether the listing named by `oracle` has a fragment part (it draws).
