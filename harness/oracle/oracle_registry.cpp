@@ -10,6 +10,8 @@
 #include "core/errors.h"
 #include "oracle/listings/cg_refraction.h"
 #include "oracle/listings/cg_refraction_builtin.h"
+#include "oracle/listings/cg_refraction_decal.h"
+#include "oracle/listings/cg_refraction_fragment.h"
 #include "oracle/listings/cs381_chromatic_aberration.h"
 #include "oracle/listings/cs381_glass.h"
 #include "oracle/listings/cs381_refraction.h"
@@ -39,6 +41,7 @@ constexpr std::array kOracles = {
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
     RegisteredOracle{listings::kCgRefractionName, &listings::makeCgRefractionOracle},
     RegisteredOracle{listings::kCgRefractionBuiltinName, &listings::makeCgRefractionBuiltinOracle},
+    RegisteredOracle{listings::kCgRefractionDecalName, &listings::makeCgRefractionDecalOracle},
     RegisteredOracle{listings::kCs381RefractionName, &listings::makeCs381RefractionOracle},
     RegisteredOracle{listings::kCs381ChromaticAberrationName,
                      &listings::makeCs381ChromaticAberrationOracle},
@@ -63,6 +66,8 @@ constexpr std::array kFragmentOracles = {
                              &listings::makeOrangeBookChromaticFragmentOracle},
     RegisteredFragmentOracle{listings::kOrangeBookDiffractionName,
                              &listings::makeOrangeBookDiffractionFragmentOracle},
+    RegisteredFragmentOracle{listings::kCgRefractionDecalName,
+                             &listings::makeCgRefractionFragmentOracle},
 };
 
 }  // namespace
