@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/glsl_declarations.h"
+#include "core/legacy_builtins.h"
 
 namespace snell {
 namespace {
@@ -19,6 +20,56 @@ std::optional<GlslDeclaration> find(const std::vector<GlslDeclaration>& declarat
   return std::nullopt;
 }
 
+bool legacyName(const std::string& name) { return name.rfind("gl_", 0) == 0; }
+
+// A binding to a fixed-function built-in (gl_ModelViewMatrix, gl_Vertex):
+// declared by GL itself, so it is checked against the table of what snell
+// sets, by kind and type, instead of against the listing's declarations.
+void checkLegacyBinding(const Manifest& m, const Binding& b, bool uniform,
+                        const ResolvedBindings& bindings) {
+  const std::string manifest = m.path.string();
+  const auto builtin = findLegacyBuiltin(b.name);
+  const bool attribute = builtin && builtin->kind == LegacyBuiltinKind::Attribute;
+  if (!builtin || attribute == uniform)
+    throw UsageError(fmt::format(
+        "{}:{}: {} `{}` is not a built-in snell can set; it sets {}; "
+        "check the spelling",
+        manifest, b.line, uniform ? "uniform" : "input", b.name, legacyBindableNames()));
+  if (builtin->kind == LegacyBuiltinKind::DerivedMatrix)
+    throw UsageError(fmt::format(
+        "{}:{}: `{}` is derived by OpenGL from gl_ModelViewMatrix{}; "
+        "bind {} instead",
+        manifest, b.line, b.name, b.name == "gl_NormalMatrix" ? "" : " and gl_ProjectionMatrix",
+        b.name == "gl_NormalMatrix" ? "gl_ModelViewMatrix"
+                                    : "gl_ModelViewMatrix and gl_ProjectionMatrix"));
+  if (m.profile != Profile::Compatibility)
+    throw UsageError(
+        fmt::format("{}:{}: `{}` is fixed-function state, which only a legacy "
+                    "listing reads; set profile = \"compatibility\"",
+                    manifest, b.line, b.name));
+  if (uniform) {
+    const auto bound = bindings.uniforms.find(b.name);
+    if (bound == bindings.uniforms.end())
+      throw UsageError(fmt::format("{}:{}: `{}` is a {} but is bound to a texture", manifest,
+                                   b.line, b.name, glslTypeName(builtin->type)));
+    if (bound->second.type != builtin->type)
+      throw UsageError(fmt::format("{}:{}: `{}` is a {} but is bound to a {}", manifest, b.line,
+                                   b.name, glslTypeName(builtin->type),
+                                   glslTypeName(bound->second.type)));
+    return;
+  }
+  // glNormalPointer takes exactly three components, glVertexPointer two to four.
+  const int components = bindings.attributes.at(b.name).components;
+  const bool fits = b.name == "gl_Normal"   ? components == 3
+                    : b.name == "gl_Vertex" ? components >= 2
+                                            : components >= 1;
+  if (!fits)
+    throw UsageError(
+        fmt::format("{}:{}: input `{}` is a {} but its semantic gives {} "
+                    "components",
+                    manifest, b.line, b.name, glslTypeName(builtin->type), components));
+}
+
 }  // namespace
 
 void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program,
@@ -29,6 +80,10 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
   for (const GlslDeclaration& d : readGlobalDeclarations(program.fragment)) all.push_back(d);
 
   for (const Binding& b : m.uniforms) {
+    if (legacyName(b.name)) {
+      checkLegacyBinding(m, b, true, bindings);
+      continue;
+    }
     const auto declared = find(all, {"uniform"}, b.name);
     if (!declared)
       throw UsageError(fmt::format("{}:{}: uniform `{}` is not declared in {}{}{}; check the "
@@ -48,6 +103,10 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
                                    glslTypeName(bound->second.type)));
   }
   for (const Binding& b : m.inputs) {
+    if (legacyName(b.name)) {
+      checkLegacyBinding(m, b, false, bindings);
+      continue;
+    }
     const auto declared = find(vertex, {"in", "attribute"}, b.name);
     if (!declared)
       throw UsageError(fmt::format("{}:{}: input `{}` is not declared in {}; check the spelling "
