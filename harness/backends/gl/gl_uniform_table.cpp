@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "backends/gl/gl_legacy_state.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -144,12 +145,20 @@ GlUniformTable::GlUniformTable(GLuint program) {
 std::string GlUniformTable::glslName(GLenum type) { return glslNameOf(type); }
 
 void GlUniformTable::apply(const UniformMap& uniforms) {
+  // A legacy program's matrices are context state, not uniforms of the
+  // program (gl_legacy_state.h); asked of the bound program on every job,
+  // they cost a few queries and keep this table the program's own.
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  const bool legacyMatrices = queryLegacyReads(static_cast<GLuint>(current)).matrices;
   // Everything is checked before anything is set, so a rejected job leaves
   // the program as it was.
+  if (legacyMatrices) checkLegacyMatrices(uniforms);
   for (const auto& [name, value] : uniforms) {
     const auto found = slots_.find(name);
     if (found != slots_.end()) checkSettable(name, found->second, value);
   }
+  if (legacyMatrices) loadLegacyMatrices(uniforms);
   for (auto& [name, slot] : slots_) {
     const auto given = uniforms.find(name);
     if (given != uniforms.end()) {

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "backends/gl/gl_error_check.h"
+#include "backends/gl/gl_legacy_state.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -38,8 +39,14 @@ GlVertexInputs::~GlVertexInputs() {
 
 void GlVertexInputs::check(GlLinkedProgram& program, const AttributeMap& attributes,
                            std::size_t vertexCount) {
+  const GlLegacyReads legacy = queryLegacyReads(program.program.id());
   for (const auto& [name, stream] : attributes) {
-    if (program.attributeLocation(name) >= 0) checkAttribute(stream, vertexCount);
+    if (legacy.reads(name)) {
+      checkAttribute(stream, vertexCount);
+      checkLegacyAttribute(stream);
+    } else if (program.attributeLocation(name) >= 0) {
+      checkAttribute(stream, vertexCount);
+    }
   }
 }
 
@@ -47,10 +54,18 @@ void GlVertexInputs::bindAttributes(GlLinkedProgram& program, const AttributeMap
                                     std::size_t vertexCount) {
   // Arrays a previous job enabled would otherwise feed this program.
   disableAttributes();
+  // A legacy program reads gl_Vertex, gl_Normal, gl_MultiTexCoordk from
+  // the fixed-function arrays (gl_legacy_state.h), which only a
+  // compatibility context has.
+  const bool compatibility = compatibilityContext();
+  if (compatibility) disableLegacyArrays();
+  const GlLegacyReads legacy =
+      compatibility ? queryLegacyReads(program.program.id()) : GlLegacyReads{};
   std::size_t used = 0;
   for (const auto& [name, stream] : attributes) {
-    const GLint location = program.attributeLocation(name);
-    if (location < 0) continue;
+    const bool builtin = legacy.reads(name);
+    const GLint location = builtin ? -1 : program.attributeLocation(name);
+    if (!builtin && location < 0) continue;
     if (used == attributeBuffers_.size()) {
       attributeBuffers_.push_back(0);
       glGenBuffers(1, &attributeBuffers_.back());
@@ -59,12 +74,17 @@ void GlVertexInputs::bindAttributes(GlLinkedProgram& program, const AttributeMap
     glBindBuffer(GL_ARRAY_BUFFER, attributeBuffers_[used++]);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(floats * sizeof(float)),
                  stream.data.data(), GL_STREAM_DRAW);
+    if (builtin) {
+      enableLegacyArray(name, stream.components);
+      continue;
+    }
     glVertexAttribPointer(static_cast<GLuint>(location), stream.components, GL_FLOAT, GL_FALSE, 0,
                           nullptr);
     glEnableVertexAttribArray(static_cast<GLuint>(location));
     enabledLocations_.push_back(static_cast<GLuint>(location));
   }
   glBindBuffer(GL_ARRAY_BUFFER, 0);
+  resetLegacyCurrentValues(legacy, attributes);
   throwOnGlError("binding vertex attributes (glBufferData, glVertexAttribPointer)");
 }
 
