@@ -143,15 +143,26 @@ TEST(VkGlslToSpirv, LinkErrorsNameTheFiles) {
   EXPECT_NE(compiled.log.find("entry point"), std::string::npos) << compiled.log;
 }
 
-TEST(VkGlslToSpirv, CompatibilityProfileIsReportedNotThrown) {
-  ProgramSource program = listing14_1();
-  program.profile = Profile::Compatibility;
-  VulkanProgram compiled;
-  ASSERT_NO_THROW(compiled = compileForVulkan(program));
-  EXPECT_FALSE(compiled.ok);
-  EXPECT_NE(compiled.log.find("compatibility profile is not supported on Vulkan yet"),
-            std::string::npos);
-  EXPECT_NE(compiled.log.find(kListingVertex), std::string::npos);
+TEST(VkGlslToSpirv, CompatibilityProfileGoesThroughTheLegacyAdapter) {
+  // A GLSL 1.40 listing is unchanged by the adapter; a legacy one gets its
+  // built-ins as variables, reported under the built-ins' names.
+  ProgramSource modern = listing14_1();
+  modern.profile = Profile::Compatibility;
+  const VulkanProgram compiled = compileForVulkan(modern);
+  EXPECT_TRUE(compiled.ok) << compiled.log;
+
+  ProgramSource legacy = vktest::vertexProgram(
+      "varying vec3 n;\nvoid main() { n = gl_NormalMatrix * gl_Normal; gl_Position = "
+      "ftransform(); }\n",
+      "probes/legacy.vert");  // no #version: GLSL 1.10
+  legacy.profile = Profile::Compatibility;
+  const VulkanProgram adapted = compileForVulkan(legacy);
+  ASSERT_TRUE(adapted.ok) << adapted.log;
+  ASSERT_TRUE(adapted.uniformBlock);
+  std::vector<std::string> members;
+  for (const BlockMember& member : adapted.uniformBlock->members) members.push_back(member.name);
+  std::sort(members.begin(), members.end());
+  EXPECT_EQ(members, (std::vector<std::string>{"gl_ModelViewProjectionMatrix", "gl_NormalMatrix"}));
 }
 
 }  // namespace

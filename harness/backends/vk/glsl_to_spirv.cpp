@@ -10,6 +10,7 @@
 
 #include "backends/vk/spirv_validate.h"
 #include "core/errors.h"
+#include "core/legacy_adapter.h"
 
 namespace snell::vk {
 
@@ -140,6 +141,23 @@ std::vector<VertexInput> reflectVertexInputs(const glslang::TProgram& program) {
   return inputs;
 }
 
+// Values come under the names the listing uses (gl_ModelViewMatrix,
+// gl_Vertex); the adapted program reads them as snell_ variables. Naming
+// the reflected members and inputs back lets the rest of the backend bind
+// them as any other. GL's derived state is not bound by anyone: it is
+// computed from the given matrices when the block is packed.
+void bindUnderBuiltinNames(const std::vector<LegacyRenaming>& renamings, VulkanProgram& program) {
+  auto builtinOf = [&](std::string& name) {
+    for (const LegacyRenaming& renaming : renamings)
+      if (renaming.renamed == name) name = renaming.builtin;
+  };
+  if (program.uniformBlock) {
+    for (BlockMember& member : program.uniformBlock->members) builtinOf(member.name);
+    program.uniformBlock->derivesLegacyState = true;
+  }
+  for (VertexInput& input : program.vertexInputs) builtinOf(input.name);
+}
+
 std::vector<std::uint32_t> generateSpirv(glslang::TProgram& program, EShLanguage stage,
                                          const std::string& file, std::string& log) {
   std::vector<std::uint32_t> spirv;
@@ -159,15 +177,20 @@ VulkanProgram compileForVulkan(const ProgramSource& source) {
   const std::string vertexFile = displayName(source.vertexPath, "<vertex shader>");
   const std::string fragmentFile = displayName(source.fragmentPath, "<fragment shader>");
   const bool hasFragment = !source.fragment.empty();
-  if (source.profile == Profile::Compatibility) {
-    result.log = vertexFile + ": compatibility profile is not supported on Vulkan yet\n";
-    return result;
+  // A legacy listing goes through the one documented adapter
+  // (core/legacy_adapter.h): its text stays as published everywhere else.
+  const bool legacy = source.profile == Profile::Compatibility;
+  LegacyAdapted vertexText{source.vertex, {}};
+  LegacyAdapted fragmentText{source.fragment, {}};
+  if (legacy) {
+    vertexText = adaptLegacyForVulkan(source.vertex, LegacyStage::Vertex);
+    if (hasFragment) fragmentText = adaptLegacyForVulkan(source.fragment, LegacyStage::Fragment);
   }
 
-  auto vertex = parseStage(EShLangVertex, source.vertex, vertexFile, result.log);
+  auto vertex = parseStage(EShLangVertex, vertexText.text, vertexFile, result.log);
   std::unique_ptr<glslang::TShader> fragment;
   if (hasFragment)
-    fragment = parseStage(EShLangFragment, source.fragment, fragmentFile, result.log);
+    fragment = parseStage(EShLangFragment, fragmentText.text, fragmentFile, result.log);
   if (!vertex || (hasFragment && !fragment)) return result;
 
   // Declared after the shaders so that it is destroyed first: it points at them.
@@ -185,6 +208,11 @@ VulkanProgram compileForVulkan(const ProgramSource& source) {
 
   result.uniformBlock = reflectDefaultBlock(program);
   result.vertexInputs = reflectVertexInputs(program);
+  if (legacy) {
+    std::vector<LegacyRenaming> renamings = vertexText.renamings;
+    renamings.insert(renamings.end(), fragmentText.renamings.begin(), fragmentText.renamings.end());
+    bindUnderBuiltinNames(renamings, result);
+  }
   result.vertexSpirv = generateSpirv(program, EShLangVertex, vertexFile, result.log);
   if (fragment)
     result.fragmentSpirv = generateSpirv(program, EShLangFragment, fragmentFile, result.log);

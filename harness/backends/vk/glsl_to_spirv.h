@@ -3,6 +3,9 @@
 // locations) to Vulkan SPIR-V with glslang's relaxed Vulkan rules, and
 // reports what the harness needs to feed it: the gl_DefaultUniformBlock
 // layout and the vertex input locations, both from glslang's reflection.
+// A compatibility-profile (legacy) listing is first passed through the
+// legacy adapter (core/legacy_adapter.h); the uniforms and inputs it adds
+// are reported under the built-ins' names (gl_ModelViewMatrix, gl_Vertex).
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/errors.h"
+#include "core/legacy_builtins.h"
 
 namespace snell::vk {
 
@@ -34,8 +35,11 @@ std::size_t matrixColumnStride(BlockPacking packing, int rows) {
   return rows == 3 ? 16 : bytes;
 }
 
-void packUniforms(const UniformBlockLayout& layout, const UniformMap& values,
+void packUniforms(const UniformBlockLayout& layout, const UniformMap& given,
                   std::span<std::byte> block) {
+  const UniformMap derived =
+      layout.derivesLegacyState ? withDerivedLegacyState(given) : UniformMap{};
+  const UniformMap& values = layout.derivesLegacyState ? derived : given;
   for (const BlockMember& member : layout.members) {
     auto found = values.find(member.name);
     if (found == values.end()) continue;

@@ -27,6 +27,11 @@ struct UniformBlockLayout {
   BlockPacking packing = BlockPacking::Std140;
   std::size_t size = 0;  // bytes, as reflected
   std::vector<BlockMember> members;
+  // A legacy listing's block (core/legacy_adapter.h): members named
+  // gl_NormalMatrix and gl_ModelViewProjectionMatrix are computed from the
+  // given gl_ModelViewMatrix and gl_ProjectionMatrix as GL derives them
+  // (core/legacy_builtins.h), never taken from the values.
+  bool derivesLegacyState = false;
 };
 
 // Bytes between consecutive columns of a float matrix whose columns hold `rows` floats.
@@ -34,7 +39,8 @@ std::size_t matrixColumnStride(BlockPacking packing, int rows);
 
 // Writes every value whose name the block has into `block` (block.size()
 // must be layout.size); members without a value are left as they are, and
-// values the block lacks are ignored. Throws UsageError naming the uniform
+// values the block lacks are ignored (a legacy block first adds GL's
+// derived state, see derivesLegacyState). Throws UsageError naming the uniform
 // when a value's type or length does not match the declaration.
 void packUniforms(const UniformBlockLayout& layout, const UniformMap& values,
                   std::span<std::byte> block);

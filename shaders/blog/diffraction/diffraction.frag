@@ -1,0 +1,6 @@
+varying vec4 Color;
+void main(void)
+
+{
+gl_FragColor =Color ;
+} 
