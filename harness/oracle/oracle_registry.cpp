@@ -8,6 +8,9 @@
 #include <array>
 
 #include "core/errors.h"
+#include "oracle/listings/blog_chromatic.h"
+#include "oracle/listings/blog_diffraction.h"
+#include "oracle/listings/blog_fresnel.h"
 #include "oracle/listings/cg_refraction.h"
 #include "oracle/listings/cg_refraction_builtin.h"
 #include "oracle/listings/cg_refraction_decal.h"
@@ -37,6 +40,9 @@ struct RegisteredOracle {
 };
 
 constexpr std::array kOracles = {
+    RegisteredOracle{listings::kBlogFresnelName, &listings::makeBlogFresnelOracle},
+    RegisteredOracle{listings::kBlogChromaticName, &listings::makeBlogChromaticOracle},
+    RegisteredOracle{listings::kBlogDiffractionName, &listings::makeBlogDiffractionOracle},
     RegisteredOracle{listings::kOrangeBookFresnelName, &listings::makeOrangeBookFresnelOracle},
     RegisteredOracle{listings::kOrangeBookChromaticName, &listings::makeOrangeBookChromaticOracle},
     RegisteredOracle{listings::kCgRefractionName, &listings::makeCgRefractionOracle},
