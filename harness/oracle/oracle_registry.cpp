@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "oracle/listings/blog_chromatic.h"
 #include "oracle/listings/blog_diffraction.h"
+#include "oracle/listings/blog_diffraction_fragment.h"
 #include "oracle/listings/blog_fresnel.h"
 #include "oracle/listings/cg_refraction.h"
 #include "oracle/listings/cg_refraction_builtin.h"
@@ -66,6 +67,8 @@ struct RegisteredFragmentOracle {
 };
 
 constexpr std::array kFragmentOracles = {
+    RegisteredFragmentOracle{listings::kBlogDiffractionName,
+                             &listings::makeBlogDiffractionFragmentOracle},
     RegisteredFragmentOracle{listings::kOrangeBookFresnelName,
                              &listings::makeOrangeBookFresnelFragmentOracle},
     RegisteredFragmentOracle{listings::kOrangeBookChromaticName,

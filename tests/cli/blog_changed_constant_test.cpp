@@ -52,6 +52,11 @@ void expectEveryCaseFails(const fs::path& dir) {
       const CaseResult result = runner.run(c);
       EXPECT_EQ(result.status, Status::Fail) << name << " " << c.id << "\n" << result.message;
       EXPECT_GT(result.componentsFailed(), 0u) << name << " " << c.id;
+      if (c.spec.has("image")) {
+        ASSERT_FALSE(result.images.empty()) << name << " " << c.id;
+        EXPECT_EQ(result.images[0].against, "reference");
+        EXPECT_EQ(result.images[0].verdict, ImageVerdict::Fail) << name << " " << c.id;
+      }
     }
   }
   fs::remove_all(dir);
