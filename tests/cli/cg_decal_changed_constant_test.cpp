@@ -3,67 +3,33 @@
 // vertex stage's vectors still pass: the failure must come from the image
 // check, against the CPU reference (which runs the listing as published)
 // and against the golden.
-#include <gtest/gtest.h>
-
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
-#include "backends/backend.h"
-#include "core/case.h"
-#include "runner/case_runner.h"
+#include "edited_listing.h"
 
 namespace snell {
 namespace {
 
-namespace fs = std::filesystem;
-
 constexpr const char* kListing = "cg-tutorial/c7e4f-refraction";
 constexpr const char* kFragment = "c7e4f_refraction.frag";
 
-// Copies the listing folder to a temporary place and edits its fragment program.
-fs::path editedCopy(const std::string& from, const std::string& to) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("snell-decal-edited-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  fs::copy(fs::path(SNELL_SOURCE_ROOT "/shaders") / kListing, dir, fs::copy_options::recursive);
-  std::ifstream in(dir / kFragment);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string source = text.str();
-  const std::size_t at = source.find(from);
-  EXPECT_NE(at, std::string::npos) << from << " not in " << kFragment;
-  source.replace(at, from.size(), to);
-  std::ofstream(dir / kFragment, std::ios::trunc) << source;
-  return dir;
+std::filesystem::path editedCopy(const std::string& from, const std::string& to) {
+  return edited::editedCopy(kListing, kFragment, from, to);
 }
 
-void expectEveryImageFails(const fs::path& dir) {
-  const std::vector<Manifest> manifests = loadManifests(dir);
-  const std::vector<Case> cases = expandCases(manifests, "");
-  ASSERT_EQ(cases.size(), 2u);
-  for (const char* name : {"gl", "vk"}) {
-    std::unique_ptr<Backend> backend = makeBackend(name, BackendOptions{.validation = true});
-    OracleCache oracles;
-    SceneCache scenes;
-    ReferenceCache references;
-    CaseRunner runner(*backend, oracles, scenes, references,
-                      ImageCheckOptions{dir / "out", SNELL_SOURCE_ROOT "/golden"});
-    for (const Case& c : cases) {
-      ASSERT_TRUE(c.spec.has("image")) << c.id;
-      const CaseResult result = runner.run(c);
-      EXPECT_EQ(result.status, Status::Fail) << name << " " << c.id << "\n" << result.message;
-      // The vertex stage was not edited: its vectors still pass.
-      EXPECT_EQ(result.componentsFailed(), 0u) << name << " " << c.id;
-      ASSERT_EQ(result.images.size(), 2u) << name << " " << c.id << "\n" << result.message;
-      EXPECT_EQ(result.images[0].against, "reference");
-      EXPECT_EQ(result.images[0].verdict, ImageVerdict::Fail) << name << " " << c.id;
-      EXPECT_EQ(result.images[1].against, "golden");
-      EXPECT_EQ(result.images[1].verdict, ImageVerdict::Fail) << name << " " << c.id;
-    }
+void expectEveryImageFails(const std::filesystem::path& dir) {
+  const std::vector<edited::EditedResult> results = edited::runOnBothBackends(dir);
+  ASSERT_EQ(results.size(), 4u);  // sphere and torus on gl and vk
+  for (const edited::EditedResult& r : results) {
+    const std::string where = r.backend + " " + r.c.id + "\n" + r.result.message;
+    ASSERT_TRUE(r.c.spec.has("image")) << r.c.id;
+    EXPECT_EQ(r.result.status, Status::Fail) << where;
+    // The vertex stage was not edited: its vectors still pass.
+    EXPECT_EQ(r.result.componentsFailed(), 0u) << where;
+    ASSERT_EQ(r.result.images.size(), 2u) << where;
+    EXPECT_EQ(r.result.images[0].against, "reference");
+    EXPECT_EQ(r.result.images[0].verdict, ImageVerdict::Fail) << where;
+    EXPECT_EQ(r.result.images[1].against, "golden");
+    EXPECT_EQ(r.result.images[1].verdict, ImageVerdict::Fail) << where;
   }
-  fs::remove_all(dir);
 }
 
 TEST(CgDecalChangedConstant, SwappedMixArgumentsFailOnBothBackends) {
