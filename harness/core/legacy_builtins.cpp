@@ -5,6 +5,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 
 #include "core/camera_math.h"
 
@@ -51,8 +52,8 @@ Mat4d toMat4d(const Value& value) {
 // Whether the upper 3x3's columns are orthonormal to fp32 rounding: then
 // the matrix is its own inverse transpose.
 bool orthonormal(const Mat4d& m) {
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
+  for (std::size_t a = 0; a < 3; ++a)
+    for (std::size_t b = 0; b < 3; ++b) {
       const double dot =
           m[a * 4] * m[b * 4] + m[a * 4 + 1] * m[b * 4 + 1] + m[a * 4 + 2] * m[b * 4 + 2];
       if (std::fabs(dot - (a == b ? 1.0 : 0.0)) > 1e-6) return false;
