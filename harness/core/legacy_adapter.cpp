@@ -268,6 +268,17 @@ class Adapter {
       fragColor_ = true;
       return write(end, "snell_FragColor");
     }
+    if (!vertex() && name == "gl_FragCoord") {
+      // OpenGL counts window rows from the bottom; a Vulkan fragment shader
+      // may only count them from the top (OriginUpperLeft). The harness
+      // gives the framebuffer's height, and y is mirrored back.
+      declare(150, LegacyRenaming::Kind::Uniform, kFramebufferHeightUniform,
+              kFramebufferHeightUniform,
+              fmt::format("uniform float {0}; vec4 snell_FragCoord() {{ return "
+                          "vec4(gl_FragCoord.x, {0} - gl_FragCoord.y, gl_FragCoord.zw); }}",
+                          kFramebufferHeightUniform));
+      return write(end, "snell_FragCoord()");
+    }
     if (!vertex() && name == "gl_FragData") {
       if (const auto index = literalIndex(end, after, breaks)) {
         const std::string renamed = fmt::format("snell_FragData{}", *index);

@@ -28,6 +28,10 @@
 //    snell_TextureMatrixN (both stages);
 //  - ftransform() -> (snell_ModelViewProjectionMatrix * snell_Vertex), its
 //    definition.
+//  - gl_FragCoord -> snell_FragCoord(), which mirrors y back to OpenGL's
+//    lower-left origin (Vulkan allows only an upper-left one) from the
+//    framebuffer height the backend gives in `snell_FramebufferHeight`
+//    (fragment).
 // Only what the source uses is declared. Everything else passes through,
 // including probe outputs a harness inserted before (`layout(location = k)
 // out vec4 snell_probe_k;` and their writes): when the result uses
@@ -59,6 +63,10 @@
 namespace snell {
 
 enum class LegacyStage { Vertex, Fragment };
+
+// The uniform through which a Vulkan render gives an adapted fragment
+// shader its framebuffer's height in pixels (for gl_FragCoord).
+inline constexpr const char* kFramebufferHeightUniform = "snell_FramebufferHeight";
 
 // One built-in turned into an ordinary variable.
 struct LegacyRenaming {

@@ -113,6 +113,25 @@ TEST(LegacyAdapter, FragColorBecomesADeclaredOutput) {
   EXPECT_EQ(adapted.renamings[0].renamed, "snell_FragColor");
 }
 
+// Vulkan counts gl_FragCoord's rows from the top, OpenGL from the bottom:
+// the adapted shader mirrors y with the height the backend supplies.
+TEST(LegacyAdapter, FragCoordCountsRowsFromTheBottomAsInOpenGL) {
+  const LegacyAdapted adapted = adaptLegacyForVulkan(
+      "void main() { gl_FragColor = vec4(gl_FragCoord.xy, 0.0, 1.0); }\n", LegacyStage::Fragment);
+  EXPECT_TRUE(has(adapted.text, "uniform float snell_FramebufferHeight;")) << adapted.text;
+  EXPECT_TRUE(has(adapted.text, "vec4 snell_FragCoord() { return vec4(gl_FragCoord.x, "
+                                "snell_FramebufferHeight - gl_FragCoord.y, gl_FragCoord.zw); }"))
+      << adapted.text;
+  EXPECT_TRUE(has(adapted.text, "snell_FragColor = vec4(snell_FragCoord().xy, 0.0, 1.0);"))
+      << adapted.text;
+  ASSERT_EQ(adapted.renamings.size(), 2u);
+  EXPECT_EQ(adapted.renamings[0].kind, LegacyRenaming::Kind::Uniform);
+  EXPECT_EQ(adapted.renamings[0].builtin, kFramebufferHeightUniform);
+  // A vertex shader has no gl_FragCoord: nothing is mapped there.
+  EXPECT_FALSE(has(adaptLegacyForVulkan("float gl_FragCoord;\n", LegacyStage::Vertex).text,
+                   "snell_FragCoord"));
+}
+
 TEST(LegacyAdapter, FragDataWithALiteralIndexBecomesAnOutputAtThatLocation) {
   const std::string text =
       fragmentText("void main() { gl_FragData[0] = vec4(1.0); gl_FragData [ 2 ] = vec4(0.0); }\n");

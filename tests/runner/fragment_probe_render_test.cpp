@@ -36,8 +36,8 @@ void main() {
 const char* kLegacyVertex = R"(attribute vec3 position;
 void main() { gl_Position = vec4(position, 1.0); }
 )";
-const char* kLegacyFragment = R"(// Line numbers as in kFragment.
-varying vec3 unused;
+const char* kLegacyFragment = R"(// Line numbers as in kFragment:
+// no #version, so GLSL 1.10.
 void main() {
   vec2 p = gl_FragCoord.xy;
   float s = p.x * 0.5 + p.y;
@@ -64,7 +64,11 @@ RenderJob topHalfJob(const char* vertex, const char* fragment, Profile profile) 
   return job;
 }
 
-void expectProbes(const std::string& backendName, const RenderOutcome& outcome) {
+// Which way gl_FragCoord counts rows in what a backend ran.
+enum class RowOrigin { Bottom, Top };
+
+void expectProbes(const std::string& backendName, const RenderOutcome& outcome,
+                  RowOrigin origin) {
   ASSERT_TRUE(outcome.compile.ok) << outcome.compile.log;
   ASSERT_EQ(outcome.probes.size(), 3u);
   for (int row = 0; row < kHeight; ++row)
@@ -78,10 +82,9 @@ void expectProbes(const std::string& backendName, const RenderOutcome& outcome) 
           for (int c = 0; c < 4; ++c) EXPECT_EQ(probe[c], 0.0f);
         continue;
       }
-      // gl_FragCoord's origin is the lower left in OpenGL, the upper left
-      // in Vulkan.
       const float fx = static_cast<float>(x) + 0.5f;
-      const float fy = static_cast<float>(backendName == "gl" ? kHeight - 1 - row : row) + 0.5f;
+      const float fy =
+          static_cast<float>(origin == RowOrigin::Bottom ? kHeight - 1 - row : row) + 0.5f;
       EXPECT_EQ(p[0], fx);
       EXPECT_EQ(p[1], fy);
       EXPECT_EQ(p[2], 0.0f);
@@ -104,9 +107,22 @@ void expectProbes(const std::string& backendName, const RenderOutcome& outcome) 
 
 class FragmentProbeRender : public testing::TestWithParam<const char*> {};
 
+// A core listing runs unmodified: gl_FragCoord's origin is the lower left
+// in OpenGL and the upper left in Vulkan, and the probes show each.
 TEST_P(FragmentProbeRender, CoreListing) {
   std::unique_ptr<Backend> backend = makeBackend(GetParam(), BackendOptions{.validation = true});
-  expectProbes(GetParam(), backend->render(topHalfJob(kVertex, kFragment, Profile::Core)));
+  expectProbes(GetParam(), backend->render(topHalfJob(kVertex, kFragment, Profile::Core)),
+               std::string(GetParam()) == "gl" ? RowOrigin::Bottom : RowOrigin::Top);
+}
+
+// A legacy listing runs with OpenGL's meaning on both: gl_FragData on
+// OpenGL, and on Vulkan the legacy adapter, which also mirrors gl_FragCoord
+// to count rows from the bottom.
+TEST_P(FragmentProbeRender, LegacyListingSeesOpenGLsRowOrder) {
+  std::unique_ptr<Backend> backend = makeBackend(GetParam(), BackendOptions{.validation = true});
+  expectProbes(GetParam(),
+               backend->render(topHalfJob(kLegacyVertex, kLegacyFragment, Profile::Compatibility)),
+               RowOrigin::Bottom);
 }
 
 TEST_P(FragmentProbeRender, WithoutProbesTheListingRendersAsBefore) {
@@ -120,12 +136,6 @@ TEST_P(FragmentProbeRender, WithoutProbesTheListingRendersAsBefore) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, FragmentProbeRender, testing::Values("gl", "vk"));
-
-TEST(FragmentProbeRenderGl, LegacyListingWritesThroughFragData) {
-  std::unique_ptr<Backend> backend = makeBackend("gl", {});
-  expectProbes("gl", backend->render(topHalfJob(kLegacyVertex, kLegacyFragment,
-                                                Profile::Compatibility)));
-}
 
 }  // namespace
 }  // namespace snell

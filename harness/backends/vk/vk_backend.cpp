@@ -19,6 +19,7 @@
 #include "backends/vk/vk_render.h"
 #include "backends/vk/vk_shader_module.h"
 #include "core/errors.h"
+#include "core/legacy_adapter.h"
 
 namespace snell {
 
@@ -230,8 +231,13 @@ class VkBackend final : public Backend {
     const VertexStreams streams =
         matchVertexStreams(prepared.program.vertexInputs, job.attributes, vertexCount);
     if (const auto& layout = prepared.program.uniformBlock) {
+      // A legacy listing's gl_FragCoord needs the height to count rows from
+      // the bottom, as OpenGL does (core/legacy_adapter.h).
+      UniformMap uniforms = job.uniforms;
+      uniforms[kFramebufferHeightUniform] =
+          Value{ValueType::Float, {static_cast<float>(job.height)}};
       draw.uniformBytes = layout->size;
-      packUniforms(*layout, job.uniforms, renderRunner_.uniformBlock(layout->size));
+      packUniforms(*layout, uniforms, renderRunner_.uniformBlock(layout->size));
     }
     draw.uniformBinding = prepared.uniformBinding;
     draw.pipeline = prepared.pipelines->pipeline(streams.formats, job.cullBackFaces);
