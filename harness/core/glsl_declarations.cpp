@@ -4,9 +4,6 @@
 #include <set>
 
 namespace snell {
-namespace {
-
-// Replaces comments by spaces, keeping newlines so line numbers stay right.
 std::string withoutComments(const std::string& source) {
   std::string out = source;
   for (std::size_t k = 0; k + 1 < out.size(); ++k) {
@@ -22,6 +19,8 @@ std::string withoutComments(const std::string& source) {
   }
   return out;
 }
+
+namespace {
 
 bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 

@@ -15,6 +15,10 @@ struct GlslDeclaration {
   int line = 0;
 };
 
+// The source with every comment replaced by spaces, character for
+// character, newlines kept: positions and line numbers stay as they were.
+std::string withoutComments(const std::string& source);
+
 // Global `uniform/in/out/attribute/varying TYPE NAME[, NAME...];`
 // declarations outside comments and blocks; layout(...) and precision
 // qualifiers are skipped.
