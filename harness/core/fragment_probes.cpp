@@ -4,64 +4,37 @@
 
 #include <cctype>
 #include <regex>
+#include <string_view>
 
 #include "core/errors.h"
+#include "core/glsl_declarations.h"
 
 namespace snell {
 namespace {
 
-// The source split into lines, with a mask saying which characters are
-// code (not comment), so that braces and `main` in comments are ignored.
+// The source split into lines, each with its code: the same characters
+// with comments blanked, so that braces and `main` in comments are ignored
+// and columns agree between the two.
 struct Lines {
   std::vector<std::string> text;  // without the line break
-  std::vector<std::string> code;  // comments blanked to spaces
-  std::vector<std::string> breaks;
+  std::vector<std::string> code;
+  bool lastEndsWithBreak = true;
 };
 
-Lines splitLines(const std::string& source) {
-  Lines lines;
-  std::string current, code, lineBreak;
-  bool block = false;
-  auto flush = [&](const std::string& brk) {
-    lines.text.push_back(current);
-    lines.code.push_back(code);
-    lines.breaks.push_back(brk);
-    current.clear();
-    code.clear();
-  };
-  bool lineComment = false;
-  for (std::size_t k = 0; k < source.size(); ++k) {
-    const char c = source[k];
-    if (c == '\n') {
-      lineComment = false;
-      flush("\n");
-      continue;
-    }
-    current += c;
-    if (lineComment) {
-      code += ' ';
-    } else if (block) {
-      code += ' ';
-      if (c == '*' && k + 1 < source.size() && source[k + 1] == '/') {
-        current += '/';
-        code += ' ';
-        ++k;
-        block = false;
-      }
-    } else if (c == '/' && k + 1 < source.size() && source[k + 1] == '/') {
-      lineComment = true;
-      code += ' ';
-    } else if (c == '/' && k + 1 < source.size() && source[k + 1] == '*') {
-      block = true;
-      current += '*';
-      code += "  ";
-      ++k;
-    } else {
-      code += c;
-    }
+std::vector<std::string> splitAtBreaks(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', start)) {
+    lines.push_back(text.substr(start, at - start));
+    start = at + 1;
   }
-  if (!current.empty() || source.empty() || source.back() != '\n') flush("");
+  if (start < text.size() || text.empty() || text.back() != '\n') lines.push_back(text.substr(start));
   return lines;
+}
+
+Lines splitLines(const std::string& source) {
+  return {splitAtBreaks(source), splitAtBreaks(withoutComments(source)),
+          !source.empty() && source.back() == '\n'};
 }
 
 struct Position {
@@ -136,7 +109,19 @@ std::string replaceFragColor(const std::string& text) {
 
 }  // namespace
 
-std::string probeOutputName(std::size_t index) { return fmt::format("snell_probe_{}", index + 1); }
+constexpr std::string_view kProbePrefix = "snell_probe_";
+
+std::string probeOutputName(std::size_t index) {
+  return fmt::format("{}{}", kProbePrefix, index + 1);
+}
+
+std::optional<int> probeOutputLocation(const std::string& name) {
+  if (name.rfind(kProbePrefix, 0) != 0) return std::nullopt;
+  const std::string digits = name.substr(kProbePrefix.size());
+  // A manifest reads back at most 7 values, so a location is one digit.
+  if (digits.size() != 1 || digits[0] < '1' || digits[0] > '9') return std::nullopt;
+  return digits[0] - '0';
+}
 
 ProbeOutputStyle probeOutputStyleFor(const std::string& source) {
   static const std::regex kLegacyOutput(R"(\bgl_Frag(Color|Data)\b)");
@@ -196,7 +181,8 @@ std::string insertFragmentProbes(const std::string& source, const std::string& p
     if (l == body.open.line) text.insert(body.open.column + 1, initial);
     if (l == body.declaration.line) text.insert(body.declaration.column, declarations);
     if (style == ProbeOutputStyle::FragData) text = replaceFragColor(text);
-    out += text + lines.breaks[l];
+    out += text;
+    if (l + 1 < lines.text.size() || lines.lastEndsWithBreak) out += '\n';
   }
   return out;
 }

@@ -7,6 +7,7 @@
 // published. Each probe's target holds (value, 1) where the statement ran
 // and (0, 0, 0, 0) elsewhere, so pixels a branch skipped are told apart.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ enum class ProbeOutputStyle { Outputs, FragData };
 
 // "snell_probe_<index + 1>": the output the probe with this index writes.
 std::string probeOutputName(std::size_t index);
+// The colour output location a probe output's name asks for
+// ("snell_probe_3" -> 3), or nullopt for any other name.
+std::optional<int> probeOutputLocation(const std::string& name);
 
 // The style an OpenGL source needs: FragData when it writes gl_FragColor or
 // gl_FragData, Outputs otherwise.

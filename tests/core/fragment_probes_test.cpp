@@ -70,6 +70,15 @@ TEST(FragmentProbes, LegacyOutputsMoveToFragData) {
             "}\n");
 }
 
+// The name a probe's output gets and the location it asks for go together.
+TEST(FragmentProbes, OutputNamesGiveTheirLocations) {
+  for (std::size_t index = 0; index < 7; ++index)
+    EXPECT_EQ(probeOutputLocation(probeOutputName(index)), static_cast<int>(index) + 1);
+  for (const char* other : {"FragColor", "snell_probe_", "snell_probe_0", "snell_probe_12",
+                            "snell_probe_x", "my_snell_probe_1"})
+    EXPECT_EQ(probeOutputLocation(other), std::nullopt) << other;
+}
+
 TEST(FragmentProbes, NoProbesLeavesTheSourceAlone) {
   EXPECT_EQ(insertFragmentProbes(kListing, "x.frag", {}, ProbeOutputStyle::FragData), kListing);
 }

@@ -1,5 +1,9 @@
 #include "backends/gl/gl_fragment_outputs.h"
 
+#include <optional>
+
+#include "core/fragment_probes.h"
+
 namespace snell {
 
 namespace {
@@ -30,17 +34,16 @@ std::vector<GlFragmentOutput> queryFragmentOutputs(GLuint program) {
 
 bool bindOutputLocations(GLuint program) {
   const std::vector<GlFragmentOutput> outputs = queryFragmentOutputs(program);
-  const std::string probePrefix = "snell_probe_";
   std::vector<const GlFragmentOutput*> listingOutputs;
   bool moved = false;
   for (const GlFragmentOutput& output : outputs) {
-    if (output.name.rfind(probePrefix, 0) != 0) {
+    const std::optional<int> location = probeOutputLocation(output.name);
+    if (!location) {
       listingOutputs.push_back(&output);
       continue;
     }
-    const GLint location = std::stoi(output.name.substr(probePrefix.size()));
-    if (output.location == location) continue;
-    glBindFragDataLocation(program, static_cast<GLuint>(location), output.name.c_str());
+    if (output.location == *location) continue;
+    glBindFragDataLocation(program, static_cast<GLuint>(*location), output.name.c_str());
     moved = true;
   }
   if (listingOutputs.size() == 1 && listingOutputs.front()->location != 0) {

@@ -5,24 +5,9 @@
 #include <set>
 
 #include "backends/vk/spirv_module.h"
+#include "core/fragment_probes.h"
 
 namespace snell::vk {
-
-namespace {
-
-constexpr const char* kProbePrefix = "snell_probe_";
-
-// The location a probe's name asks for; nullopt-like -1 for other names.
-int probeLocation(const std::string& name) {
-  if (name.rfind(kProbePrefix, 0) != 0) return -1;
-  const std::string digits = name.substr(std::string(kProbePrefix).size());
-  if (digits.empty() || digits.size() > 2 ||
-      digits.find_first_not_of("0123456789") != std::string::npos)
-    return -1;
-  return std::stoi(digits);
-}
-
-}  // namespace
 
 OutputLocationResult assignProbeOutputLocations(std::span<const std::uint32_t> spirv) {
   OutputLocationResult result;
@@ -58,12 +43,12 @@ OutputLocationResult assignProbeOutputLocations(std::span<const std::uint32_t> s
                      " lacks a Location decoration or a name to place it by";
       return result;
     }
-    const int location = probeLocation(name->second);
-    if (location < 0) {
+    const std::optional<int> location = probeOutputLocation(name->second);
+    if (!location) {
       listingOutputs.push_back(variable);
       continue;
     }
-    words[word->second] = static_cast<std::uint32_t>(location);
+    words[word->second] = static_cast<std::uint32_t>(*location);
   }
   if (listingOutputs.size() > 1) {
     result.error = "the fragment shader declares " + std::to_string(listingOutputs.size()) +
