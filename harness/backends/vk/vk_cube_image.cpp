@@ -1,11 +1,8 @@
 #include "backends/vk/vk_cube_image.h"
 
 #include <cstring>
-#include <string>
 
-#include "backends/vk/vk_check.h"
-#include "backends/vk/vk_sampled_image_upload.h"
-#include "core/errors.h"
+#include "backends/vk/vk_sampled_image.h"
 
 namespace snell::vk {
 
@@ -15,21 +12,8 @@ constexpr VkFormat kCubeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
 
 VkImageCreateInfo cubeInfo(const VulkanDevice& device, const CubeMap& map) {
-  VkFormatProperties properties{};
-  vkGetPhysicalDeviceFormatProperties(device.physical(), kCubeFormat, &properties);
-  const VkFormatFeatureFlags features = properties.optimalTilingFeatures;
-  const std::string renderer = device.driverInfo().renderer;
-  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0 ||
-      (features & VK_FORMAT_FEATURE_TRANSFER_DST_BIT) == 0) {
-    throw SetupError(renderer + " cannot sample VK_FORMAT_R32G32B32A32_SFLOAT images");
-  }
-  if (map.filter == CubeFilter::Linear &&
-      (features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) == 0) {
-    throw SetupError(renderer +
-                     " lacks VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT for "
-                     "VK_FORMAT_R32G32B32A32_SFLOAT, so it cannot filter a float cube map "
-                     "linearly");
-  }
+  requireSampledFormat(device, kCubeFormat, "VK_FORMAT_R32G32B32A32_SFLOAT",
+                       map.filter == CubeFilter::Linear, "cube map");
   const auto size = static_cast<std::uint32_t>(map.size);
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
@@ -47,7 +31,6 @@ VkImageCreateInfo cubeInfo(const VulkanDevice& device, const CubeMap& map) {
   return info;
 }
 
-
 }  // namespace
 
 CubeImage::CubeImage(const VulkanDevice& device, const CubeMap& map, OneTimeCommands& commands,
@@ -55,18 +38,7 @@ CubeImage::CubeImage(const VulkanDevice& device, const CubeMap& map, OneTimeComm
     : device_(device),
       image_(device, cubeInfo(device, map), VK_IMAGE_VIEW_TYPE_CUBE, VK_IMAGE_ASPECT_COLOR_BIT) {
   const VkFilter filter = map.filter == CubeFilter::Linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  VkSamplerCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  info.magFilter = filter;
-  info.minFilter = filter;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.minLod = 0.0f;
-  info.maxLod = 0.0f;
-  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-  check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
+  sampler_ = makeBaseLevelSampler(device_, filter, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE);
   try {
     upload(map, commands, staging);
   } catch (...) {

@@ -1,11 +1,8 @@
 #include "backends/vk/vk_texture_2d.h"
 
 #include <cstring>
-#include <string>
 
-#include "backends/vk/vk_check.h"
-#include "backends/vk/vk_sampled_image_upload.h"
-#include "core/errors.h"
+#include "backends/vk/vk_sampled_image.h"
 
 namespace snell::vk {
 
@@ -15,20 +12,7 @@ constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkDeviceSize kTexelBytes = 4 * sizeof(float);
 
 VkImageCreateInfo imageInfo(const VulkanDevice& device, const Image& image) {
-  VkFormatProperties properties{};
-  vkGetPhysicalDeviceFormatProperties(device.physical(), kFormat, &properties);
-  const VkFormatFeatureFlags features = properties.optimalTilingFeatures;
-  const std::string renderer = device.driverInfo().renderer;
-  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT) == 0 ||
-      (features & VK_FORMAT_FEATURE_TRANSFER_DST_BIT) == 0) {
-    throw SetupError(renderer + " cannot sample VK_FORMAT_R32G32B32A32_SFLOAT images");
-  }
-  if ((features & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) == 0) {
-    throw SetupError(renderer +
-                     " lacks VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT for "
-                     "VK_FORMAT_R32G32B32A32_SFLOAT, so it cannot filter a float 2D texture "
-                     "linearly");
-  }
+  requireSampledFormat(device, kFormat, "VK_FORMAT_R32G32B32A32_SFLOAT", true, "2D texture");
   VkImageCreateInfo info{};
   info.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO;
   info.imageType = VK_IMAGE_TYPE_2D;
@@ -45,25 +29,13 @@ VkImageCreateInfo imageInfo(const VulkanDevice& device, const Image& image) {
   return info;
 }
 
-
 }  // namespace
 
 Texture2D::Texture2D(const VulkanDevice& device, const Image& image, OneTimeCommands& commands,
                      HostBuffer& staging)
     : device_(device),
       image_(device, imageInfo(device, image), VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT) {
-  VkSamplerCreateInfo info{};
-  info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-  info.magFilter = VK_FILTER_LINEAR;
-  info.minFilter = VK_FILTER_LINEAR;
-  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
-  info.minLod = 0.0f;
-  info.maxLod = 0.0f;
-  info.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-  check(vkCreateSampler(device_.handle(), &info, nullptr, &sampler_), "vkCreateSampler");
+  sampler_ = makeBaseLevelSampler(device_, VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT);
   try {
     upload(image, commands, staging);
   } catch (...) {
