@@ -231,13 +231,18 @@ class VkBackend final : public Backend {
     const VertexStreams streams =
         matchVertexStreams(prepared.program.vertexInputs, job.attributes, vertexCount);
     if (const auto& layout = prepared.program.uniformBlock) {
-      // A legacy listing's gl_FragCoord needs the height to count rows from
-      // the bottom, as OpenGL does (core/legacy_adapter.h).
-      UniformMap uniforms = job.uniforms;
-      uniforms[kFramebufferHeightUniform] =
-          Value{ValueType::Float, {static_cast<float>(job.height)}};
       draw.uniformBytes = layout->size;
-      packUniforms(*layout, uniforms, renderRunner_.uniformBlock(layout->size));
+      const std::span<std::byte> block = renderRunner_.uniformBlock(layout->size);
+      if (layout->derivesLegacyState) {
+        // An adapted legacy listing's gl_FragCoord needs the height to count
+        // rows from the bottom, as OpenGL does (core/legacy_adapter.h).
+        UniformMap uniforms = job.uniforms;
+        uniforms[kFramebufferHeightUniform] =
+            Value{ValueType::Float, {static_cast<float>(job.height)}};
+        packUniforms(*layout, uniforms, block);
+      } else {
+        packUniforms(*layout, job.uniforms, block);
+      }
     }
     draw.uniformBinding = prepared.uniformBinding;
     draw.pipeline = prepared.pipelines->pipeline(streams.formats, job.cullBackFaces);
