@@ -15,28 +15,42 @@ Command addEvalCommand(CLI::App& app) {
       "eval", "Evaluate reflect/refract calls given as JSON Lines, on the oracle or a driver");
   struct Options {
     std::string backend = "oracle";
+    std::string rules = "glsl";
     std::string input = "-";
   };
   auto options = std::make_shared<Options>();
   eval->add_option("--backend", options->backend, "oracle, gl or vk")
       ->check(CLI::IsMember({"oracle", "gl", "vk"}));
+  eval->add_option("--rules", options->rules,
+                   "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
+                   "is judged by its own API's")
+      ->check(CLI::IsMember({"glsl", "vulkan"}));
   eval->add_option("input", options->input, "JSON Lines file, or - for standard input");
-  eval->footer(R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
-vectors of 1 to 4 components. Each answer: value, lo and hi (the fp32 interval the spec
-allows); on gl and vk also exact, within_spec and slack.)");
+  eval->footer(
+      R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
+vectors of 1 to 4 components; "nan", "inf" and "-inf" are accepted as numbers. Each answer:
+value, lo and hi (the fp32 interval the spec allows), the rules followed, "undefined" per
+component where the spec leaves it open, and "alternatives" (value, lo, hi for each way) where
+a branch may go either way: a vector is within the spec when it fits one alternative whole.
+On gl and vk also exact, within_spec and slack.)");
   return [options] {
     std::ifstream file;
     std::istream* in = &std::cin;
     if (options->input != "-") {
       file.open(options->input);
       if (!file)
-        throw UsageError(fmt::format("{}: cannot read this file; give a JSON Lines file or -",
-                                     options->input));
+        throw UsageError(
+            fmt::format("{}: cannot read this file; give a JSON Lines file or -", options->input));
       in = &file;
     }
     std::unique_ptr<Backend> backend;
-    if (options->backend != "oracle") backend = makeBackend(options->backend, {});
-    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get());
+    PrecisionRules rules =
+        options->rules == "vulkan" ? PrecisionRules::Vulkan : PrecisionRules::Glsl;
+    if (options->backend != "oracle") {
+      backend = makeBackend(options->backend, {});
+      rules = precisionRulesForApi(backend->driverInfo().api);
+    }
+    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules);
     if (summary.malformed) {
       fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
                  summary.malformed, options->input == "-" ? "standard input" : options->input);

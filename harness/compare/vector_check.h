@@ -1,6 +1,8 @@
 #pragma once
 // Backend vs oracle for read-back vectors: every component must lie in the
-// interval the precision rules allow for the listing's own expression.
+// interval the precision rules allow for the listing's own expression, and
+// where a branch may go either way (OracleVarying::alternatives) all the
+// components of a vector must fit the same way.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@ struct ComponentFailure {
   int component = 0;
   float observed = 0;
   double reference = 0, lo = 0, hi = 0, slack = 0;
+  int ways = 1;  // alternatives the sample had; the values above are the nearest one's
 };
 
 struct VaryingCheck {
@@ -22,7 +25,8 @@ struct VaryingCheck {
   std::size_t checked = 0;    // components held against an interval
   std::size_t undefined = 0;  // components the spec leaves undefined: not gated
   std::size_t failed = 0;
-  double worstSlack = 0;      // over the checked components
+  std::size_t withAlternatives = 0;  // samples held against two or more ways
+  double worstSlack = 0;             // over the checked components
   std::size_t worstVertex = 0;
   std::vector<ComponentFailure> firstFailures;  // at most kFailuresKept, in vertex order
   static constexpr std::size_t kFailuresKept = 8;

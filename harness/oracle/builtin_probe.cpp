@@ -2,7 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "core/errors.h"
+#include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
 
 namespace snell {
@@ -29,15 +34,59 @@ template <int Size>
 BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
   const auto value = evaluate<double, Size>(fn, call);
   const auto strict = evaluate<float, Size>(fn, call);
-  const auto allowed = evaluate<Interval, Size>(fn, call);
   BuiltinResult result;
   for (int k = 0; k < Size; ++k) {
     result.value.push_back(value[k]);
     result.strict.push_back(strict[k]);
-    result.lo.push_back(allowed[k].lo);
-    result.hi.push_back(allowed[k].hi);
   }
+  // Every way an undecidable branch may go, each with the exact value along it.
+  BranchPaths paths;
+  const UseBranchPaths active(&paths);
+  paths.explore([&] {
+    const auto allowed = evaluate<Interval, Size>(fn, call);
+    BranchReplay replay(paths.trace());
+    const UseBranchReplay replaying(&replay);
+    const auto exact = evaluate<double, Size>(fn, call);
+    BuiltinWay way;
+    for (int k = 0; k < Size; ++k) {
+      way.value.push_back(exact[k]);
+      way.lo.push_back(allowed[k].lo);
+      way.hi.push_back(allowed[k].hi);
+      way.undefined.push_back(allowed[k].undefined);
+    }
+    result.ways.push_back(std::move(way));
+  });
+  if (paths.mergedToHull()) result.ways.erase(result.ways.begin(), result.ways.end() - 1);
+  result.lo = result.ways[0].lo;
+  result.hi = result.ways[0].hi;
+  result.undefined = result.ways[0].undefined;
+  for (const BuiltinWay& way : result.ways)
+    for (int k = 0; k < Size; ++k) {
+      result.lo[k] = std::min(result.lo[k], way.lo[k]);
+      result.hi[k] = std::max(result.hi[k], way.hi[k]);
+      result.undefined[k] = result.undefined[k] || way.undefined[k];
+    }
   return result;
+}
+
+bool fits(const BuiltinWay& way, const std::vector<float>& vector) {
+  for (std::size_t k = 0; k < vector.size(); ++k) {
+    if (way.undefined[k]) continue;
+    if (!(way.lo[k] <= vector[k] && vector[k] <= way.hi[k])) return false;
+  }
+  return true;
+}
+
+// How far outside a way the vector lies, summed over components (0 inside).
+double distanceOutside(const BuiltinWay& way, const std::vector<float>& vector) {
+  double distance = 0.0;
+  for (std::size_t k = 0; k < vector.size(); ++k) {
+    if (way.undefined[k]) continue;
+    const double x = vector[k];
+    if (std::isnan(x)) return std::numeric_limits<double>::infinity();
+    distance += std::max({0.0, way.lo[k] - x, x - way.hi[k]});
+  }
+  return distance;
 }
 
 Builtin parseBuiltin(const std::string& fn) {
@@ -48,7 +97,19 @@ Builtin parseBuiltin(const std::string& fn) {
 
 }  // namespace
 
-BuiltinResult evaluateBuiltin(const BuiltinCall& call) {
+bool BuiltinResult::allows(const std::vector<float>& vector) const {
+  return std::any_of(ways.begin(), ways.end(),
+                     [&](const BuiltinWay& way) { return fits(way, vector); });
+}
+
+const BuiltinWay& BuiltinResult::nearestWay(const std::vector<float>& vector) const {
+  return *std::min_element(ways.begin(), ways.end(), [&](const BuiltinWay& a, const BuiltinWay& b) {
+    return distanceOutside(a, vector) < distanceOutside(b, vector);
+  });
+}
+
+BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules) {
+  const UsePrecisionRules applied(rules);
   const Builtin fn = parseBuiltin(call.fn);
   if (call.I.size() != call.N.size()) {
     throw UsageError(fmt::format("{}: I has {} components and N has {}; they must match", call.fn,

@@ -3,21 +3,38 @@
 #include <string>
 #include <vector>
 
+#include "oracle/precision_rules.h"
+
 namespace snell {
 
 struct BuiltinCall {
-  std::string fn;             // "reflect" or "refract"
-  std::vector<float> I, N;    // 1 to 4 components, same length
-  float eta = 1.0f;           // refract only
+  std::string fn;           // "reflect" or "refract"
+  std::vector<float> I, N;  // 1 to 4 components, same length
+  float eta = 1.0f;         // refract only
+};
+
+// One way the built-in may go (refract near the critical angle: the zero
+// vector or the refracted ray), each component's exact value and interval.
+struct BuiltinWay {
+  std::vector<double> value;
+  std::vector<double> lo, hi;
+  std::vector<bool> undefined;  // the spec leaves the component open
 };
 
 struct BuiltinResult {
   std::vector<double> value;   // exact math on the fp32 inputs
   std::vector<float> strict;   // fp32 evaluation of the defining formula
-  std::vector<double> lo, hi;  // fp32 results the spec allows, per component
+  std::vector<double> lo, hi;  // fp32 results the spec allows, per component (the hull of the ways)
+  std::vector<bool> undefined;
+  std::vector<BuiltinWay> ways;  // one, or each way an undecidable branch may go
+
+  // Whether a driver's vector fits one way entirely.
+  bool allows(const std::vector<float>& vector) const;
+  // The way `vector` is judged against: one it fits, else the nearest.
+  const BuiltinWay& nearestWay(const std::vector<float>& vector) const;
 };
 
 // Throws UsageError for an unknown fn or mismatched lengths.
-BuiltinResult evaluateBuiltin(const BuiltinCall& call);
+BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules = PrecisionRules::Glsl);
 
 }  // namespace snell

@@ -5,13 +5,22 @@
 
 namespace snell {
 
-double ulp(double x) {
+double gapAbove(double x) {
   x = std::fabs(x);
-  if (std::isnan(x) || std::isinf(x)) return x;
+  if (std::isnan(x)) return x;
   if (x < kFp32MinNormal) return kFp32MinDenormal;
+  if (x > kFp32Max) return 0x1p104;
   int exponent = 0;
   std::frexp(x, &exponent);  // x = m * 2^exponent, m in [0.5, 1)
   return std::ldexp(1.0, exponent - 1 - 23);
+}
+
+double ulp(double x) {
+  const double gap = gapAbove(x);
+  x = std::fabs(x);
+  int exponent = 0;
+  const bool powerOfTwo = x > kFp32MinNormal && x <= kFp32Max && std::frexp(x, &exponent) == 0.5;
+  return powerOfTwo ? gap * 0.5 : gap;
 }
 
 double floatAtOrBelow(double x) {

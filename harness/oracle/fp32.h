@@ -8,10 +8,15 @@ inline constexpr double kFp32MinDenormal = 0x1p-149;
 inline constexpr double kFp32MinNormal = 0x1p-126;
 inline constexpr double kFp32Max = 0x1.fffffep127;
 
-// One fp32 ULP at x: the gap between adjacent floats in x's binade (for a
-// power of two, the gap above it, as the Vulkan precision appendix measures
-// from the exact result). In the denormal range it is 2^-149.
+// One fp32 ULP at x, Harrison's, as the Vulkan precision appendix and dEQP
+// define it: the smallest gap between floats a <= x <= b, so at an exact
+// power of two the gap below it. In the denormal range it is 2^-149, past
+// the largest float 2^104.
 double ulp(double x);
+// The gap between the floats around x in x's binade (at a power of two, the
+// gap above): the largest error of one rounding of a value of magnitude
+// up to |x|.
+double gapAbove(double x);
 
 // The largest float <= x and the smallest float >= x (infinities beyond the
 // float range). Both return x itself when x is a float.

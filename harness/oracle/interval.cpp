@@ -5,138 +5,188 @@
 #include <cmath>
 #include <limits>
 
+#include "oracle/interval_float_sets.h"
+
 namespace snell {
 namespace {
 
+using float_sets::Range;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-double nextDown(double x) { return std::nextafter(x, -kInf); }
-double nextUp(double x) { return std::nextafter(x, kInf); }
+double maxAbs(double lo, double hi) { return std::max(std::fabs(lo), std::fabs(hi)); }
 
-// A real number held as double + error (error-free transformations), so that
-// an exact float result is not widened and an inexact one gets exactly the
-// two floats around it.
-struct Exact {
-  double value;
-  double error;  // exact = value + error, |error| <= half a double ULP
-};
-
-Exact exactSum(double a, double b) {
-  const double s = a + b;
-  if (!std::isfinite(s)) return {s, 0.0};
-  const double bVirtual = s - a;
-  return {s, (a - (s - bVirtual)) + (b - bVirtual)};
+bool isExactPowerOfTwo(double x) {
+  if (x == 0.0 || !std::isfinite(x)) return false;
+  int exponent = 0;
+  return std::fabs(std::frexp(x, &exponent)) == 0.5;
 }
 
-Exact exactProduct(double a, double b) {
-  const double p = a * b;
-  if (!std::isfinite(p)) return {p, 0.0};
-  return {p, std::fma(a, b, -p)};
+bool exactPowerOfTwoLiteral(const Interval& v);
+
+// The region of a closed value: a leaf with its error.
+IntervalRegion closedRegion(const Interval& v) {
+  return leafRegion(maxAbs(v.idealLo, v.idealHi), v.err, exactPowerOfTwoLiteral(v));
 }
 
-// Largest float <= the exact value: when the double is above the exact value,
-// the exact value lies strictly between the double and the one below it.
-double floatBelow(Exact x) { return floatAtOrBelow(x.error < 0 ? nextDown(x.value) : x.value); }
-double floatAbove(Exact x) { return floatAtOrAbove(x.error > 0 ? nextUp(x.value) : x.value); }
-
-// Any result whose magnitude is below the smallest normal may be flushed.
-Interval admitFlushToZero(Interval r) {
-  if (r.lo < kFp32MinNormal && r.hi > -kFp32MinNormal) {
-    r.lo = std::min(r.lo, 0.0);
-    r.hi = std::max(r.hi, 0.0);
-  }
+// A constant expression's result may also be the compiler's own folding of
+// the decimal literals, rounded once to fp32 (either way: a double
+// evaluation is within a few double ULPs of exact, well inside the float
+// gap). The allowed set and the error bound grow to hold that value too;
+// the region keeps the fold as an alternative leaf.
+Interval withFold(Interval r, double folded) {
+  if (r.undefined || !std::isfinite(folded)) return r;
+  const double slop = std::fabs(folded) * 0x1p-50;
+  const Range fold = float_sets::floatsIn(folded - slop, folded + slop);
+  r.lo = std::min(r.lo, fold.lo);
+  r.hi = std::max(r.hi, fold.hi);
+  const double foldErr = std::max(std::fabs(fold.hi - r.idealLo), std::fabs(r.idealHi - fold.lo));
+  r.err = std::max(r.err, foldErr);
+  r.region.mag = std::max(r.region.mag, r.region.mag0 + foldErr);
+  r.region.maxSub = std::max(r.region.maxSub, r.region.mag);
+  r.constant = true;
+  r.folded = folded;
   return r;
 }
 
-Interval finish(double lo, double hi) {
-  if (std::isnan(lo) || std::isnan(hi)) return Interval::unconstrained();
-  return admitFlushToZero(Interval(lo, hi));
+bool exactPowerOfTwoLiteral(const Interval& v) {
+  return v.constant && v.lo == v.hi && v.err == 0.0 && isExactPowerOfTwo(v.lo);
 }
 
-// The lowest value reachable by going `ulps` ULPs below some x in [lo, hi].
-// The ULP doubles at each power of two, so for a positive range the first
-// power of two above lo may reach lower than lo itself.
-double lowestWithinUlps(double lo, double hi, double ulps) {
-  if (!std::isfinite(lo)) return lo;
-  double lowest = lo - ulps * ulp(lo);
-  if (lo >= 0.0) {
-    // Below 2^-125 the ULP is 2^-149 throughout (denormals and first binade).
-    double power = 0x1p-125;
-    if (lo >= power) {
-      int exponent = 0;
-      std::frexp(lo, &exponent);
-      power = std::ldexp(1.0, exponent);
-    }
-    if (power <= hi) lowest = std::min(lowest, power - ulps * ulp(power));
+// Bounds past the float range: a result there may be the largest float or
+// an infinity, so its distance from the ideal value has no bound.
+double errUnlessOverflowed(double idealLo, double idealHi, double err) {
+  return maxAbs(idealLo, idealHi) + err > kFp32Max ? kInf : err;
+}
+
+enum class RegionOp { Add, Multiply };
+
+// a + b or a * b: the ideal range, the region of every regrouping with the
+// operands' own open regions, and the floats that can come out of it.
+Interval combine(const Interval& a, const Interval& b, RegionOp op) {
+  if (a.undefined || b.undefined) return Interval::unconstrained();
+  if (!std::isfinite(a.err) || !std::isfinite(b.err)) return Interval::unconstrained();
+  const PrecisionRules rules = currentPrecisionRules();
+  // An open region joins the result's region; without distributivity a
+  // sum is rounded before it is multiplied, and a leaf is taken closed.
+  const auto operand = [&](const Interval& v) {
+    const bool open = v.region.kind != IntervalRegion::Kind::Leaf &&
+                      !(op == RegionOp::Multiply && rules == PrecisionRules::Glsl &&
+                        v.region.kind == IntervalRegion::Kind::Sum);
+    return open ? v : closedView(v);
+  };
+  const Interval av = operand(a);
+  const Interval bv = operand(b);
+  const IntervalRegion& ra = av.region;
+  const IntervalRegion& rb = bv.region;
+  Interval r;
+  r.region = op == RegionOp::Add ? sumRegion(ra, rb) : productRegion(ra, rb);
+  if (mayOverflowInside(r.region)) return Interval::unconstrained();
+  const Range ideal =
+      op == RegionOp::Add
+          ? float_sets::exactSumRange(av.idealLo, av.idealHi, bv.idealLo, bv.idealHi)
+          : float_sets::exactProductRange(av.idealLo, av.idealHi, bv.idealLo, bv.idealHi);
+  const double pending = pendingError(r.region, rules);
+  Range set = float_sets::roundedAround(ideal, pending);
+  // A single operation on closed operands has one order only: the plain
+  // interval of it is exact and holds as well.
+  if (ra.kind == IntervalRegion::Kind::Leaf && rb.kind == IntervalRegion::Kind::Leaf) {
+    const Range plain = op == RegionOp::Add ? float_sets::roundedSum(a.lo, a.hi, b.lo, b.hi)
+                                            : float_sets::roundedProduct(a.lo, a.hi, b.lo, b.hi);
+    set.lo = std::max(set.lo, plain.lo);
+    set.hi = std::min(set.hi, plain.hi);
   }
-  return nextDown(lowest);
-}
-
-// The floats in [lo, hi]; beyond the float range an overflowing result is
-// infinite.
-Interval floatsIn(double lo, double hi) {
-  const double low = lo < -kFp32Max ? -kInf : floatAtOrAbove(lo);
-  const double high = hi > kFp32Max ? kInf : floatAtOrBelow(hi);
-  return finish(low, high);
+  if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return Interval::unconstrained();
+  set = float_sets::admitFlushToZero(set);
+  r.lo = set.lo;
+  r.hi = set.hi;
+  r.idealLo = ideal.lo;
+  r.idealHi = ideal.hi;
+  r.err = errUnlessOverflowed(
+      ideal.lo, ideal.hi,
+      pending + float_sets::roundingError(ideal.lo - pending, ideal.hi + pending));
+  if (a.constant && b.constant)
+    return withFold(r, op == RegionOp::Add ? a.folded + b.folded : a.folded * b.folded);
+  return r;
 }
 
 }  // namespace
 
+Interval::Interval(double low, double high) : lo(low), hi(high), idealLo(low), idealHi(high) {
+  region = leafRegion(maxAbs(low, high), 0.0, false);
+}
+
 Interval Interval::point(float value) {
   if (std::isnan(value)) return unconstrained();
-  return admitFlushToZero(Interval(value, value));
+  Interval r(value, value);
+  if (std::fabs(value) < kFp32MinNormal && value != 0.0f) {
+    // A denormal input may arrive flushed to 0.
+    const Range set = float_sets::admitFlushToZero({r.lo, r.hi});
+    r.lo = set.lo;
+    r.hi = set.hi;
+    r.err = std::fabs(static_cast<double>(value));
+    r.region = leafRegion(r.err, r.err, false);
+  }
+  return r;
+}
+
+Interval Interval::literal(double decimal) {
+  Interval r = point(nearestFloat(decimal));
+  if (r.undefined) return r;
+  r.constant = true;
+  r.folded = decimal;
+  r.region = closedRegion(r);
+  return r;
 }
 
 Interval Interval::unconstrained() {
   Interval r(-kInf, kInf);
   r.undefined = true;
+  r.err = kInf;
   return r;
 }
 
-Interval operator+(const Interval& a, const Interval& b) {
-  if (a.undefined || b.undefined) return Interval::unconstrained();
-  return finish(floatBelow(exactSum(a.lo, b.lo)), floatAbove(exactSum(a.hi, b.hi)));
-}
+Interval operator+(const Interval& a, const Interval& b) { return combine(a, b, RegionOp::Add); }
 
 Interval operator-(const Interval& a) {
-  Interval r(-a.hi, -a.lo);
-  r.undefined = a.undefined;
+  Interval r = a;
+  r.lo = -a.hi;
+  r.hi = -a.lo;
+  r.idealLo = -a.idealHi;
+  r.idealHi = -a.idealLo;
+  r.folded = -a.folded;
   return r;
 }
 
 Interval operator-(const Interval& a, const Interval& b) { return a + (-b); }
 
 Interval operator*(const Interval& a, const Interval& b) {
-  if (a.undefined || b.undefined) return Interval::unconstrained();
-  const std::array<Exact, 4> products = {exactProduct(a.lo, b.lo), exactProduct(a.lo, b.hi),
-                                         exactProduct(a.hi, b.lo), exactProduct(a.hi, b.hi)};
-  double lo = kInf;
-  double hi = -kInf;
-  for (const Exact& p : products) {
-    // 0 * inf: a value that may have overflowed times one that may be 0.
-    if (std::isnan(p.value)) return Interval::unconstrained();
-    lo = std::min(lo, floatBelow(p));
-    hi = std::max(hi, floatAbove(p));
-  }
-  return finish(lo, hi);
+  return combine(a, b, RegionOp::Multiply);
 }
 
-Interval operator/(const Interval& a, const Interval& b) {
-  if (a.undefined || b.undefined) return Interval::unconstrained();
+Interval operator/(const Interval& aIn, const Interval& bIn) {
+  if (aIn.undefined || bIn.undefined) return Interval::unconstrained();
+  const Interval a = closedView(aIn);
+  const Interval b = closedView(bIn);
   if (b.lo <= 0.0 && b.hi >= 0.0) return Interval::unconstrained();
   const double smallest = std::min(std::fabs(b.lo), std::fabs(b.hi));
-  const double largest = std::max(std::fabs(b.lo), std::fabs(b.hi));
+  const double largest = maxAbs(b.lo, b.hi);
   if (smallest < 0x1p-126 || largest > 0x1p126) return Interval::unconstrained();
-  const std::array<double, 4> quotients = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
-  double lo = kInf;
-  double hi = -kInf;
-  for (double q : quotients) {
-    if (std::isnan(q)) return Interval::unconstrained();
-    lo = std::min(lo, q);
-    hi = std::max(hi, q);
-  }
-  // The double quotients are within half a double ULP of the exact ones.
-  return withinUlps(nextDown(lo), nextUp(hi), 2.5);
+  if (b.idealLo <= 0.0 && b.idealHi >= 0.0) return Interval::unconstrained();
+  const Range quotients = float_sets::quotientRange(a.lo, a.hi, b.lo, b.hi);
+  const Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
+  const Range ideal = float_sets::quotientRange(a.idealLo, a.idealHi, b.idealLo, b.idealHi);
+  // |a'/b' - a/b| <= (|a' - a| |b| + |a| |b' - b|) / (|b'| |b|), then the
+  // 2.5 ULP of the division itself at the computed quotient.
+  const double idealSmallest = std::min(std::fabs(b.idealLo), std::fabs(b.idealHi));
+  const double propagated =
+      (a.err * maxAbs(b.idealLo, b.idealHi) + maxAbs(a.idealLo, a.idealHi) * b.err) /
+      (smallest * idealSmallest);
+  const double own = 2.5 * gapAbove(maxAbs(quotients.lo, quotients.hi)) +
+                     float_sets::flushError(quotients.lo, quotients.hi);
+  Interval r = leafValue(set.lo, set.hi, ideal.lo, ideal.hi, float_sets::up(propagated + own));
+  if (aIn.constant && bIn.constant) return withFold(r, aIn.folded / bIn.folded);
+  return r;
 }
 
 Truth operator<(const Interval& a, const Interval& b) {
@@ -160,19 +210,59 @@ double width(const Interval& range) { return range.hi - range.lo; }
 
 Interval hull(const Interval& a, const Interval& b) {
   if (a.undefined || b.undefined) return Interval::unconstrained();
-  return Interval(std::min(a.lo, b.lo), std::max(a.hi, b.hi));
+  return leafValue(std::min(a.lo, b.lo), std::max(a.hi, b.hi), std::min(a.idealLo, b.idealLo),
+                   std::max(a.idealHi, b.idealHi), std::max(a.err, b.err));
 }
 
 Interval withinUlps(double exactLo, double exactHi, double ulps) {
   if (std::isnan(exactLo) || std::isnan(exactHi)) return Interval::unconstrained();
-  const double lo = lowestWithinUlps(exactLo, exactHi, ulps);
-  const double hi = -lowestWithinUlps(-exactHi, -exactLo, ulps);
-  return floatsIn(lo, hi);
+  const Range set = float_sets::withinUlps(exactLo, exactHi, ulps);
+  return Interval(set.lo, set.hi);
 }
 
 Interval withinDistance(double exactLo, double exactHi, double distance) {
   if (std::isnan(exactLo) || std::isnan(exactHi)) return Interval::unconstrained();
-  return floatsIn(nextDown(exactLo - distance), nextUp(exactHi + distance));
+  const Range set = float_sets::strictlyWithin(exactLo - distance, exactHi + distance);
+  return Interval(set.lo, set.hi);
+}
+
+Interval leafValue(double lo, double hi, double idealLo, double idealHi, double err) {
+  if (!std::isfinite(err) || std::isnan(lo) || std::isnan(hi) || std::isnan(idealLo) ||
+      std::isnan(idealHi))
+    return Interval::unconstrained();
+  const Range set = float_sets::admitFlushToZero({lo, hi});
+  Interval r(set.lo, set.hi);
+  r.idealLo = idealLo;
+  r.idealHi = idealHi;
+  r.err = errUnlessOverflowed(idealLo, idealHi, err);
+  r.region = closedRegion(r);
+  return r;
+}
+
+Interval closedView(const Interval& value) {
+  if (value.undefined) return value;
+  Interval r = value;
+  const bool setIsTighter =
+      currentPrecisionRules() == PrecisionRules::Glsl && std::isfinite(value.lo) &&
+      std::isfinite(value.hi) &&
+      value.hi - value.lo <= (value.idealHi - value.idealLo) + 2.0 * value.err;
+  if (setIsTighter) {
+    r.idealLo = value.lo;
+    r.idealHi = value.hi;
+    r.err = 0.0;
+  }
+  r.region = closedRegion(r);
+  return r;
+}
+
+Interval symmetricAboutIdeal(const Interval& value) {
+  if (value.undefined || !std::isfinite(value.err)) return value;
+  Interval r = value;
+  const Range symmetric =
+      float_sets::floatsIn(value.idealLo - value.err, value.idealHi + value.err);
+  r.lo = std::min(r.lo, symmetric.lo);
+  r.hi = std::max(r.hi, symmetric.hi);
+  return r;
 }
 
 }  // namespace snell

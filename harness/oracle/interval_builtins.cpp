@@ -4,11 +4,18 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include "oracle/interval_float_sets.h"
+#include "oracle/precision_rules.h"
 
 namespace snell {
 namespace {
 
+using float_sets::up;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kLn2 = 0.69314718055994530942;
 
 // libm's exp2, log2 and 1/sqrt in double are within a couple of double ULPs;
 // four ULPs outward keep the "exact" range a true bound of the real one.
@@ -16,57 +23,137 @@ double below(double x) { return x - std::fabs(x) * 0x1p-50; }
 double above(double x) { return x + std::fabs(x) * 0x1p-50; }
 
 double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
+double idealMagnitude(const Interval& x) {
+  return std::max(std::fabs(x.idealLo), std::fabs(x.idealHi));
+}
+
+// The smallest value the computed or the ideal argument can take: the
+// derivative bounds of a decreasing-slope function are taken there.
+double smallestArgument(const Interval& x) { return std::min(x.lo, x.idealLo); }
+
+Interval folded(Interval r, const Interval& x, double (*f)(double)) {
+  if (!x.constant || r.undefined) return r;
+  const double value = f(x.folded);
+  if (!std::isfinite(value)) return r;
+  const double slop = std::fabs(value) * 0x1p-50;
+  const float_sets::Range fold = float_sets::floatsIn(value - slop, value + slop);
+  r.lo = std::min(r.lo, fold.lo);
+  r.hi = std::max(r.hi, fold.hi);
+  r.err = std::max(r.err, std::max(std::fabs(fold.hi - r.idealLo), std::fabs(r.idealHi - fold.lo)));
+  r.region = leafRegion(std::max(std::fabs(r.idealLo), std::fabs(r.idealHi)), r.err, false);
+  r.constant = true;
+  r.folded = value;
+  return r;
+}
+
+double inverseSqrtOf(double x) { return 1.0 / std::sqrt(x); }
+double sqrtOf(double x) { return std::sqrt(x); }
+double exp2Of(double x) { return std::exp2(x); }
+double expOf(double x) { return std::exp(x); }
+double log2Of(double x) { return std::log2(x); }
 
 }  // namespace
 
-Interval inversesqrt(const Interval& x) {
-  if (x.undefined || x.lo <= 0.0) return Interval::unconstrained();
-  return withinUlps(below(1.0 / std::sqrt(x.hi)), above(1.0 / std::sqrt(x.lo)), 2.0);
+Interval inversesqrt(const Interval& xIn) {
+  const Interval x = closedView(xIn);
+  if (x.undefined || x.lo <= 0.0 || x.idealLo <= 0.0) return Interval::unconstrained();
+  const float_sets::Range set =
+      float_sets::withinUlps(below(1.0 / std::sqrt(x.hi)), above(1.0 / std::sqrt(x.lo)), 2.0);
+  // |1/sqrt(a') - 1/sqrt(a)| <= |a' - a| / (2 m^1.5), m the smallest
+  // argument; then 2 ULP of its own at the computed value.
+  const double m = smallestArgument(x);
+  const double propagated = x.err / (2.0 * m * std::sqrt(m));
+  const double own = 2.0 * gapAbove(above(1.0 / std::sqrt(x.lo)));
+  const Interval r = leafValue(set.lo, set.hi, below(1.0 / std::sqrt(x.idealHi)),
+                               above(1.0 / std::sqrt(x.idealLo)), up(up(propagated) + own));
+  return folded(r, x, inverseSqrtOf);
 }
 
-Interval sqrt(const Interval& x) {
+Interval sqrt(const Interval& xIn) {
+  const Interval x = closedView(xIn);
   if (x.undefined || x.lo < 0.0) return Interval::unconstrained();
   const Interval zero = Interval::point(0.0f);
   if (x.hi <= 0.0) return zero;
-  // Where x is 0 the formula's 1/inf limit is 0; elsewhere the smallest
-  // positive float keeps inversesqrt below 2^75, inside the division rule's
-  // range.
+  // The float set: the formula 1.0 / inversesqrt(x) itself. Where x is 0
+  // the formula's 1/inf limit is 0; elsewhere the smallest positive float
+  // keeps inversesqrt below 2^75, inside the division rule's range.
   const Interval positive(std::max(x.lo, kFp32MinDenormal), x.hi);
   const Interval root = Interval::point(1.0f) / inversesqrt(positive);
-  return x.lo <= 0.0 ? hull(zero, root) : root;
+  if (root.undefined) return root;
+  const double lo = x.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
+  // Its error: the argument's error through sqrt (sqrt(|a' - a|) at worst,
+  // |a' - a| / (2 sqrt(m)) away from 0), plus the formula's own relative
+  // error: inversesqrt's 2 ULP then the division's 2.5, each at most
+  // 2^-23 of the value.
+  const double m = std::max(0.0, smallestArgument(x));
+  const double propagated =
+      m > 0.0 ? std::min(std::sqrt(x.err), x.err / (2.0 * std::sqrt(m))) : std::sqrt(x.err);
+  // r = inversesqrt within 2 ULP, then 1 / r within 2.5 ULP: the first
+  // moves 1/r by at most 2 gap(r) / r of its value.
+  const double rMax = above(1.0 / std::sqrt(std::max(x.lo, kFp32MinDenormal)));
+  const double rMin = below(1.0 / std::sqrt(x.hi));
+  const double sMax = above(std::sqrt(x.hi));
+  const double own = up(2.0 * gapAbove(rMax) / rMin * sMax * (1.0 + 0x1p-20) +
+                        2.5 * gapAbove(root.hi) + float_sets::flushError(lo, root.hi));
+  const Interval r =
+      leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
+                above(std::sqrt(std::max(0.0, x.idealHi))), up(up(propagated) + own));
+  return folded(r, x, sqrtOf);
 }
 
-Interval exp2(const Interval& x) {
+Interval exp2(const Interval& xIn) {
+  const Interval x = closedView(xIn);
   if (x.undefined) return Interval::unconstrained();
-  return withinUlps(below(std::exp2(x.lo)), above(std::exp2(x.hi)), 3.0 + 2.0 * magnitude(x));
+  const double ulps = 3.0 + 2.0 * magnitude(x);
+  const float_sets::Range set =
+      float_sets::withinUlps(below(std::exp2(x.lo)), above(std::exp2(x.hi)), ulps);
+  const double top = above(std::exp2(std::max(x.hi, x.idealHi + x.err)));
+  const double propagated = top * kLn2 * x.err;
+  const double own = ulps * gapAbove(top) + float_sets::flushError(set.lo, set.hi);
+  const Interval r = leafValue(set.lo, set.hi, below(std::exp2(x.idealLo)),
+                               above(std::exp2(x.idealHi)), up(up(propagated) + own));
+  return folded(r, x, exp2Of);
 }
 
-Interval exp(const Interval& x) {
+Interval exp(const Interval& xIn) {
+  const Interval x = closedView(xIn);
   if (x.undefined) return Interval::unconstrained();
-  return withinUlps(below(std::exp(x.lo)), above(std::exp(x.hi)), 3.0 + 2.0 * magnitude(x));
+  const double ulps = 3.0 + 2.0 * magnitude(x);
+  const float_sets::Range set =
+      float_sets::withinUlps(below(std::exp(x.lo)), above(std::exp(x.hi)), ulps);
+  const double top = above(std::exp(std::max(x.hi, x.idealHi + x.err)));
+  const double propagated = top * x.err;
+  const double own = ulps * gapAbove(top) + float_sets::flushError(set.lo, set.hi);
+  const Interval r = leafValue(set.lo, set.hi, below(std::exp(x.idealLo)),
+                               above(std::exp(x.idealHi)), up(up(propagated) + own));
+  return folded(r, x, expOf);
 }
 
-Interval log2(const Interval& x) {
-  if (x.undefined || x.lo <= 0.0) return Interval::unconstrained();
+Interval log2(const Interval& xIn) {
+  const Interval x = closedView(xIn);
+  if (x.undefined || x.lo <= 0.0 || x.idealLo <= 0.0) return Interval::unconstrained();
   // The rule changes at 0.5 and 2: bound each part by its own rule.
-  Interval result;
-  bool any = false;
-  const auto add = [&](const Interval& part) {
-    result = any ? hull(result, part) : part;
-    any = true;
+  float_sets::Range set{kInf, -kInf};
+  const auto add = [&](const float_sets::Range& part) {
+    set.lo = std::min(set.lo, part.lo);
+    set.hi = std::max(set.hi, part.hi);
   };
-  if (x.lo < 0.5) {
-    add(withinUlps(below(std::log2(x.lo)), above(std::log2(std::min(x.hi, 0.5))), 3.0));
-  }
+  if (x.lo < 0.5)
+    add(float_sets::withinUlps(below(std::log2(x.lo)), above(std::log2(std::min(x.hi, 0.5))), 3.0));
   if (x.hi >= 0.5 && x.lo <= 2.0) {
-    const double lo = std::log2(std::max(x.lo, 0.5));
-    const double hi = std::log2(std::min(x.hi, 2.0));
-    add(withinDistance(below(lo), above(hi), 0x1p-21));
+    const double lo = below(std::log2(std::max(x.lo, 0.5)));
+    const double hi = above(std::log2(std::min(x.hi, 2.0)));
+    add(float_sets::strictlyWithin(lo - 0x1p-21, hi + 0x1p-21));
   }
-  if (x.hi > 2.0) {
-    add(withinUlps(below(std::log2(std::max(x.lo, 2.0))), above(std::log2(x.hi)), 3.0));
-  }
-  return result;
+  if (x.hi > 2.0)
+    add(float_sets::withinUlps(below(std::log2(std::max(x.lo, 2.0))), above(std::log2(x.hi)), 3.0));
+  const double m = smallestArgument(x);
+  const double propagated = x.err / (kLn2 * m);
+  const double own =
+      std::max(3.0 * gapAbove(std::max(std::fabs(set.lo), std::fabs(set.hi))), 0x1p-21);
+  const Interval r = leafValue(set.lo, set.hi, below(std::log2(x.idealLo)),
+                               above(std::log2(x.idealHi)), up(up(propagated) + own));
+  return folded(r, x, log2Of);
 }
 
 Interval pow(const Interval& x, const Interval& y) {
@@ -75,48 +162,116 @@ Interval pow(const Interval& x, const Interval& y) {
   if (baseMayBeZero && y.lo <= 0.0) return Interval::unconstrained();
   const Interval zero = Interval::point(0.0f);
   if (x.hi <= 0.0) return zero;
-  const Interval positive(std::max(x.lo, kFp32MinDenormal), x.hi);
+  Interval positive(std::max(x.lo, kFp32MinDenormal), x.hi);
+  positive.idealLo = std::max(x.idealLo, kFp32MinDenormal);
+  positive.idealHi = std::max(x.idealHi, positive.idealLo);
+  positive.err = x.err;
+  positive.region = leafRegion(positive.idealHi, x.err, false);
   const Interval power = exp2(y * log2(positive));
   return baseMayBeZero ? hull(zero, power) : power;
 }
 
-Interval max(const Interval& a, const Interval& b) {
+Interval max(const Interval& aIn, const Interval& bIn) {
+  const Interval a = closedView(aIn);
+  const Interval b = closedView(bIn);
   if (a.undefined || b.undefined) return Interval::unconstrained();
-  return Interval(std::max(a.lo, b.lo), std::max(a.hi, b.hi));
+  // |max(a', b') - max(a, b)| <= max(|a' - a|, |b' - b|).
+  return leafValue(std::max(a.lo, b.lo), std::max(a.hi, b.hi), std::max(a.idealLo, b.idealLo),
+                   std::max(a.idealHi, b.idealHi), std::max(a.err, b.err));
 }
 
-Interval min(const Interval& a, const Interval& b) {
+Interval min(const Interval& aIn, const Interval& bIn) {
+  const Interval a = closedView(aIn);
+  const Interval b = closedView(bIn);
   if (a.undefined || b.undefined) return Interval::unconstrained();
-  return Interval(std::min(a.lo, b.lo), std::min(a.hi, b.hi));
+  return leafValue(std::min(a.lo, b.lo), std::min(a.hi, b.hi), std::min(a.idealLo, b.idealLo),
+                   std::min(a.idealHi, b.idealHi), std::max(a.err, b.err));
 }
+
+Interval abs(const Interval& xIn) {
+  const Interval x = closedView(xIn);
+  if (x.undefined) return x;
+  if (x.lo >= 0.0 && x.idealLo >= 0.0) return x;
+  if (x.hi <= 0.0 && x.idealHi <= 0.0) return -x;
+  const double idealLo = x.idealLo <= 0.0 && x.idealHi >= 0.0
+                             ? 0.0
+                             : std::min(std::fabs(x.idealLo), std::fabs(x.idealHi));
+  const double lo = x.lo <= 0.0 && x.hi >= 0.0 ? 0.0 : std::min(std::fabs(x.lo), std::fabs(x.hi));
+  return leafValue(lo, magnitude(x), idealLo, idealMagnitude(x), x.err);
+}
+
+namespace {
+
+// The sum of n <= 4 closed products in every order: the roundings of the
+// sum before the last one happen at partial sums of subsets of the terms;
+// the largest total over every tree shape bounds them all. `partial[mask]`
+// bounds |partial sum| over the terms in the mask.
+double worstTreeRounding(const std::vector<double>& partial, std::size_t n) {
+  const auto err = [&](unsigned mask) {
+    return float_sets::roundingError(-partial[mask], partial[mask]);
+  };
+  if (n <= 2) return 0.0;
+  if (n == 3) return std::max({err(0b011), err(0b101), err(0b110)});
+  // n == 4: a pair inside a triple, or two disjoint pairs.
+  double worst = 0.0;
+  for (unsigned triple : {0b0111u, 0b1011u, 0b1101u, 0b1110u})
+    for (unsigned pair = 1; pair < 16; ++pair)
+      if ((pair & triple) == pair && __builtin_popcount(pair) == 2)
+        worst = std::max(worst, err(pair) + err(triple));
+  for (unsigned pair : {0b0011u, 0b0101u, 0b1001u})
+    worst = std::max(worst, err(pair) + err(0b1111u ^ pair));
+  return worst;
+}
+
+}  // namespace
 
 Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b) {
-  assert(a.size() == b.size());
+  assert(a.size() == b.size() && !a.empty());
   const std::size_t n = a.size();
-  double lo = 0.0;
-  double hi = 0.0;
-  double absSum = 0.0;
+  std::vector<Interval> products;
+  products.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) products.push_back(a[i] * b[i]);
+  Interval sum = products[0];
+  for (std::size_t i = 1; i < n; ++i) sum = sum + products[i];
+  if (sum.undefined || n < 3 || n > 4) return sum;
+  // Where every factor is closed, the products are the terms and every
+  // order of their sum can be bounded one tree at a time: tighter than the
+  // region's bound, which must also hold for whatever later joins the sum.
+  for (std::size_t i = 0; i < n; ++i)
+    if (a[i].region.kind != IntervalRegion::Kind::Leaf ||
+        b[i].region.kind != IntervalRegion::Kind::Leaf)
+      return sum;
+  std::vector<double> termError(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (a[i].undefined || b[i].undefined) return Interval::unconstrained();
-    const double products[4] = {a[i].lo * b[i].lo, a[i].lo * b[i].hi, a[i].hi * b[i].lo,
-                                a[i].hi * b[i].hi};
-    double pLo = kInf;
-    double pHi = -kInf;
-    for (double p : products) {
-      if (std::isnan(p)) return Interval::unconstrained();
-      pLo = std::min(pLo, p);
-      pHi = std::max(pHi, p);
-    }
-    // Each double step rounds by at most half a double ULP: step outward.
-    lo = std::nextafter(lo + std::nextafter(pLo, -kInf), -kInf);
-    hi = std::nextafter(hi + std::nextafter(pHi, kInf), kInf);
-    absSum = std::nextafter(absSum + magnitude(a[i]) * magnitude(b[i]), kInf);
+    const Interval& p = products[i];
+    // Its operands' errors, then its one rounding (or none, fused).
+    const double propagated = p.region.mag - p.region.mag0;
+    termError[i] =
+        up(propagated + float_sets::roundingError(p.idealLo - propagated, p.idealHi + propagated));
   }
-  const double u = 0x1p-23;
-  const double gamma = static_cast<double>(n) * u / (1.0 - static_cast<double>(n) * u);
-  // Each of the 2n-1 steps may also flush a result below 2^-126 to 0.
-  const double error = above(gamma * absSum) + static_cast<double>(2 * n) * kFp32MinNormal;
-  return withinDistance(lo, hi, error);
+  std::vector<double> partial(std::size_t{1} << n, 0.0);
+  for (unsigned mask = 1; mask < partial.size(); ++mask) {
+    double lo = 0.0, hi = 0.0, error = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!(mask & (1u << i))) continue;
+      lo += products[i].idealLo;
+      hi += products[i].idealHi;
+      error += termError[i];
+    }
+    // (1 + 4u) for the roundings of smaller partial sums inside this one.
+    partial[mask] = up((std::max(std::fabs(lo), std::fabs(hi)) + error) * (1.0 + 0x1p-21));
+  }
+  double pending = 0.0;
+  for (double e : termError) pending += e;
+  pending = up(pending + worstTreeRounding(partial, n));
+  if (!(pending < sum.err)) return sum;
+  float_sets::Range set = float_sets::roundedAround({sum.idealLo, sum.idealHi}, pending);
+  set = float_sets::admitFlushToZero(set);
+  sum.lo = std::max(sum.lo, set.lo);
+  sum.hi = std::min(sum.hi, set.hi);
+  sum.err = std::min(
+      sum.err, pending + float_sets::roundingError(sum.idealLo - pending, sum.idealHi + pending));
+  return sum;
 }
 
 }  // namespace snell

@@ -18,7 +18,7 @@ Interval sqrt(const Interval& x);
 Interval exp2(const Interval& x);
 // 3 + 2|x| ULP.
 Interval exp(const Interval& x);
-// 3 ULP outside [0.5, 2], absolute 2^-21 inside; undefined for x <= 0.
+// 3 ULP outside [0.5, 2], absolute error < 2^-21 inside; undefined for x <= 0.
 Interval log2(const Interval& x);
 // Inherited from exp2(y * log2(x)); undefined for x < 0, and for x = 0 with
 // y <= 0; pow(0, y > 0) is 0.
@@ -26,12 +26,15 @@ Interval pow(const Interval& x, const Interval& y);
 // Exact.
 Interval max(const Interval& a, const Interval& b);
 Interval min(const Interval& a, const Interval& b);
+// Exact (a sign change): a range across 0 reaches down to 0.
+Interval abs(const Interval& x);
 
 // a[0]*b[0] + ... + a[n-1]*b[n-1] as dot() and matrix * vector compute it.
-// Implementations may sum in any order and fuse any product: the bound is
-// the exact range widened by gamma_n * sum |a_i b_i| (Higham), which holds
-// for every order, with unit roundoff 2^-23 because each step may round to
-// either neighbouring float.
+// Implementations may sum in any order and tree shape and fuse any product.
+// The result is an open sum region (a later + may regroup with it); for
+// n <= 4 closed operands its own set is tightened by bounding every tree
+// shape one at a time (dEQP unions the sequential orders; the tree shapes
+// of four terms are more).
 Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b);
 
 }  // namespace snell

@@ -33,7 +33,15 @@ struct Line {
 
 json finite(const std::vector<double>& values) {
   json out = json::array();
-  for (double x : values) out.push_back(std::isfinite(x) ? json(x) : json(x > 0 ? "inf" : x < 0 ? "-inf" : "nan"));
+  for (double x : values)
+    out.push_back(std::isfinite(x) ? json(x) : json(x > 0 ? "inf" : x < 0 ? "-inf" : "nan"));
+  return out;
+}
+
+json wayJson(const BuiltinWay& way) {
+  json out = {{"value", finite(way.value)}, {"lo", finite(way.lo)}, {"hi", finite(way.hi)}};
+  if (std::find(way.undefined.begin(), way.undefined.end(), true) != way.undefined.end())
+    out["undefined"] = way.undefined;
   return out;
 }
 
@@ -66,48 +74,61 @@ void runOnDriver(std::vector<Line>& lines, Backend& backend) {
   }
 }
 
-json answer(const Line& line, bool onDriver, EvalSummary& summary) {
+json answer(const Line& line, bool onDriver, PrecisionRules rules, EvalSummary& summary) {
   if (!line.call) {
     ++summary.malformed;
     return {{"line", line.number}, {"error", line.error}};
   }
   ++summary.answered;
   const BuiltinResult& oracle = *line.oracle;
-  json out = {{"line", line.number}, {"fn", line.call->fn}};
+  json out = {{"line", line.number}, {"fn", line.call->fn}, {"rules", precisionRulesName(rules)}};
   if (!onDriver) {
     out["value"] = finite(oracle.value);
   } else {
-    std::vector<double> driver(line.driver.begin(), line.driver.end());
-    bool within = true;
+    // Judged as a whole vector against the way it fits (or comes nearest).
+    const bool within = oracle.allows(line.driver);
+    const BuiltinWay& way = oracle.nearestWay(line.driver);
     double worst = 0;
-    for (std::size_t c = 0; c < driver.size(); ++c) {
-      within = within && withinSpec(driver[c], oracle.lo[c], oracle.hi[c]);
-      worst = std::max(worst, slack(driver[c], oracle.value[c], oracle.lo[c], oracle.hi[c]));
-    }
+    for (std::size_t c = 0; c < line.driver.size(); ++c)
+      if (!way.undefined[c])
+        worst = std::max(worst, slack(line.driver[c], way.value[c], way.lo[c], way.hi[c]));
     if (!within) ++summary.outsideSpec;
-    out["value"] = finite(driver);
+    out["value"] = finite(std::vector<double>(line.driver.begin(), line.driver.end()));
     out["exact"] = finite(oracle.value);
     out["within_spec"] = within;
     out["slack"] = std::isfinite(worst) ? json(worst) : json("inf");
   }
   out["lo"] = finite(oracle.lo);
   out["hi"] = finite(oracle.hi);
+  if (std::find(oracle.undefined.begin(), oracle.undefined.end(), true) != oracle.undefined.end())
+    out["undefined"] = oracle.undefined;
+  if (oracle.ways.size() > 1) {
+    json ways = json::array();
+    for (const BuiltinWay& w : oracle.ways) ways.push_back(wayJson(w));
+    out["alternatives"] = ways;
+  }
   return out;
 }
 
-void flushBatch(std::vector<Line>& lines, std::ostream& out, Backend* backend,
+void flushBatch(std::vector<Line>& lines, std::ostream& out, Backend* backend, PrecisionRules rules,
                 EvalSummary& summary) {
   for (Line& line : lines)
-    if (line.call) line.oracle = evaluateBuiltin(*line.call);
+    if (line.call) line.oracle = evaluateBuiltin(*line.call, rules);
   if (backend) runOnDriver(lines, *backend);
-  for (const Line& line : lines) out << answer(line, backend != nullptr, summary).dump() << '\n';
+  for (const Line& line : lines)
+    out << answer(line, backend != nullptr, rules, summary).dump() << '\n';
   out.flush();
   lines.clear();
 }
 
 }  // namespace
 
-EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend) {
+PrecisionRules precisionRulesForApi(const std::string& api) {
+  return api == "Vulkan" ? PrecisionRules::Vulkan : PrecisionRules::Glsl;
+}
+
+EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
+                          PrecisionRules rules) {
   EvalSummary summary;
   std::vector<Line> batch;
   std::string text;
@@ -125,9 +146,9 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend)
       line.error = fmt::format("line {}: {}", number, error.what());
     }
     batch.push_back(std::move(line));
-    if (batch.size() == kBatchLines) flushBatch(batch, out, backend, summary);
+    if (batch.size() == kBatchLines) flushBatch(batch, out, backend, rules, summary);
   }
-  flushBatch(batch, out, backend, summary);
+  flushBatch(batch, out, backend, rules, summary);
   return summary;
 }
 

@@ -6,6 +6,7 @@
 #include <ostream>
 
 #include "backends/backend.h"
+#include "oracle/precision_rules.h"
 
 namespace snell {
 
@@ -16,7 +17,12 @@ struct EvalSummary {
 };
 
 // Reads all of `in` in batches (one draw per function and width per batch),
-// so a driver is not called once per line. `backend` may be null (oracle).
-EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend);
+// so a driver is not called once per line. `backend` may be null (oracle);
+// the intervals follow `rules` (a driver is judged by its own API's).
+EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
+                          PrecisionRules rules);
+
+// The rules a driver of `api` ("OpenGL", "Vulkan") is judged by.
+PrecisionRules precisionRulesForApi(const std::string& api);
 
 }  // namespace snell

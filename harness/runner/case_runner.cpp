@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "core/scene_file.h"
+#include "runner/builtin_eval.h"
 #include "runner/fragment_vector_check.h"
 
 namespace snell {
@@ -42,26 +43,27 @@ const Scene& SceneCache::get(const std::string& name) {
 }
 
 const std::vector<OracleVarying>& OracleCache::get(const Case& c, const ResolvedBindings& bindings,
-                                                   double* secondsSpent) {
+                                                   PrecisionRules rules, double* secondsSpent) {
   *secondsSpent = 0;
-  if (auto it = results_.find(c.id); it != results_.end()) return it->second;
+  if (auto it = results_.find({c.id, rules}); it != results_.end()) return it->second;
   const auto start = std::chrono::steady_clock::now();
   const Manifest& m = *c.manifest;
   const std::unique_ptr<VertexOracle> oracle = makeVertexOracle(m.oracle);
   const std::vector<std::string> outputs = oracle->outputs();
   for (const std::string& name : m.captureVertex)
     if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
-      throw UsageError(fmt::format("{}: capture.vertex names `{}`, which oracle `{}` does not "
-                                   "compute; it computes {}",
-                                   m.path.string(), name, m.oracle, fmt::join(outputs, ", ")));
-  std::vector<OracleVarying> all =
-      oracle->evaluate({bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount});
+      throw UsageError(
+          fmt::format("{}: capture.vertex names `{}`, which oracle `{}` does not "
+                      "compute; it computes {}",
+                      m.path.string(), name, m.oracle, fmt::join(outputs, ", ")));
+  std::vector<OracleVarying> all = oracle->evaluate(
+      {bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount, rules});
   std::vector<OracleVarying> captured;
   for (const std::string& name : m.captureVertex)
     for (OracleVarying& v : all)
       if (v.name == name) captured.push_back(std::move(v));
   *secondsSpent = secondsSince(start);
-  return results_.emplace(c.id, std::move(captured)).first->second;
+  return results_.emplace(std::pair{c.id, rules}, std::move(captured)).first->second;
 }
 
 CaseResult CaseRunner::run(const Case& c) {
@@ -91,7 +93,8 @@ CaseResult CaseRunner::run(const Case& c) {
       if (c.spec.has("vectors") && !m.captureFragment.empty() &&
           result.status != Status::CompileError)
         runFragmentVectors(c, bindings, result);
-      if (c.spec.has("image") && result.status != Status::CompileError) runImage(c, bindings, result);
+      if (c.spec.has("image") && result.status != Status::CompileError)
+        runImage(c, bindings, result);
     }
   } catch (const SetupError& error) {
     result.status = Status::Fail;
@@ -103,7 +106,8 @@ CaseResult CaseRunner::run(const Case& c) {
 
 void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {
   const Manifest& m = *c.manifest;
-  const std::vector<OracleVarying>& expected = oracles_.get(c, bindings, &result.oracleSeconds);
+  const std::vector<OracleVarying>& expected =
+      oracles_.get(c, bindings, precisionRulesForApi(driver_.api), &result.oracleSeconds);
   CaptureJob job{loadProgram(m), bindings.uniforms, bindings.attributes, m.captureVertex,
                  bindings.vertexCount};
   const auto backendStart = std::chrono::steady_clock::now();
@@ -131,9 +135,10 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
   result.compileLog = outcome.log;
   if (outcome.ok) {
     result.status = Status::Fail;
-    result.message = "compiled, but the listing as published is expected not to compile "
-                     "(`expect = \"compile-error\"`)" +
-                     (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
+    result.message =
+        "compiled, but the listing as published is expected not to compile "
+        "(`expect = \"compile-error\"`)" +
+        (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
     return;
   }
   result.status = Status::ExpectedCompileError;
@@ -185,12 +190,12 @@ void CaseRunner::runImage(const Case& c, const ResolvedBindings& bindings, CaseR
     result.status = worstOf(result.status, comparison.verdict == ImageVerdict::Fail ? Status::Fail
                                            : golden ? Status::QualityWarning
                                                     : Status::Pass);
-    result.message += fmt::format(
-        "image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
-        comparison.against, imageVerdictName(comparison.verdict),
-        comparison.problem.empty() ? "" : " (" + comparison.problem + ")", comparison.maxError,
-        comparison.maxX, comparison.maxY, comparison.failed, comparison.compared,
-        c.spec.image.fail);
+    result.message +=
+        fmt::format("image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
+                    comparison.against, imageVerdictName(comparison.verdict),
+                    comparison.problem.empty() ? "" : " (" + comparison.problem + ")",
+                    comparison.maxError, comparison.maxX, comparison.maxY, comparison.failed,
+                    comparison.compared, c.spec.image.fail);
   }
   if (!check.goldenProblem.empty()) {
     result.status = worstOf(result.status, Status::Fail);

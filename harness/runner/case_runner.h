@@ -20,11 +20,12 @@ class OracleCache {
  public:
   // Evaluates on first use. Throws UsageError when the manifest captures an
   // output the oracle does not compute.
+  // Intervals follow `rules`, the API of the backend they judge.
   const std::vector<OracleVarying>& get(const Case& c, const ResolvedBindings& bindings,
-                                        double* secondsSpent);
+                                        PrecisionRules rules, double* secondsSpent);
 
  private:
-  std::map<std::string, std::vector<OracleVarying>> results_;
+  std::map<std::pair<std::string, PrecisionRules>, std::vector<OracleVarying>> results_;
 };
 
 class SceneCache {
@@ -42,10 +43,14 @@ class SceneCache {
 
 class CaseRunner {
  public:
-  CaseRunner(Backend& backend, OracleCache& oracles, SceneCache& scenes,
-             ReferenceCache& references, ImageCheckOptions imageOptions)
-      : backend_(backend), oracles_(oracles), scenes_(scenes), references_(references),
-        imageOptions_(std::move(imageOptions)), driver_(backend.driverInfo()) {}
+  CaseRunner(Backend& backend, OracleCache& oracles, SceneCache& scenes, ReferenceCache& references,
+             ImageCheckOptions imageOptions)
+      : backend_(backend),
+        oracles_(oracles),
+        scenes_(scenes),
+        references_(references),
+        imageOptions_(std::move(imageOptions)),
+        driver_(backend.driverInfo()) {}
 
   // Never throws for what a driver does; UsageError for a broken manifest.
   CaseResult run(const Case& c);
@@ -55,7 +60,6 @@ class CaseRunner {
   void runFragmentVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
   void runExpectedCompileError(const Case& c, CaseResult& result);
   void runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
-
 
   Backend& backend_;
   OracleCache& oracles_;

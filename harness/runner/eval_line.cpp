@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
@@ -11,16 +12,26 @@ namespace {
 
 using nlohmann::json;
 
+// A number, or "nan", "inf" or "-inf" (JSON has none of them).
+float number(const json& x, const char* key) {
+  if (x.is_number()) return static_cast<float>(x.get<double>());
+  if (x.is_string()) {
+    const std::string text = x.get<std::string>();
+    if (text == "nan") return std::numeric_limits<float>::quiet_NaN();
+    if (text == "inf") return std::numeric_limits<float>::infinity();
+    if (text == "-inf") return -std::numeric_limits<float>::infinity();
+  }
+  throw UsageError(
+      fmt::format("\"{}\" must hold numbers (or the strings \"nan\", \"inf\", \"-inf\")", key));
+}
+
 std::vector<float> floatVector(const json& object, const char* key) {
   if (!object.contains(key)) throw UsageError(fmt::format("missing \"{}\"", key));
   const json& value = object.at(key);
   if (!value.is_array() || value.empty() || value.size() > 4)
     throw UsageError(fmt::format("\"{}\" must be an array of 1 to 4 numbers", key));
   std::vector<float> out;
-  for (const json& x : value) {
-    if (!x.is_number()) throw UsageError(fmt::format("\"{}\" must hold numbers only", key));
-    out.push_back(static_cast<float>(x.get<double>()));
-  }
+  for (const json& x : value) out.push_back(number(x, key));
   return out;
 }
 
@@ -38,12 +49,11 @@ BuiltinCall parseEvalLine(const std::string& text) {
   call.I = floatVector(object, "I");
   call.N = floatVector(object, "N");
   if (call.I.size() != call.N.size())
-    throw UsageError(fmt::format("I has {} components and N has {}: they must match",
-                                 call.I.size(), call.N.size()));
+    throw UsageError(fmt::format("I has {} components and N has {}: they must match", call.I.size(),
+                                 call.N.size()));
   if (call.fn == "refract") {
-    if (!object.contains("eta") || !object.at("eta").is_number())
-      throw UsageError("refract needs a number \"eta\"");
-    call.eta = static_cast<float>(object.at("eta").get<double>());
+    if (!object.contains("eta")) throw UsageError("refract needs a number \"eta\"");
+    call.eta = number(object.at("eta"), "eta");
   }
   return call;
 }

@@ -8,6 +8,7 @@
 
 #include "core/errors.h"
 #include "oracle/vertex_oracle.h"
+#include "runner/builtin_eval.h"
 #include "runner/image_check.h"
 
 namespace snell {
@@ -21,7 +22,8 @@ void checkCapturesAgainstOracle(const Manifest& m, const VertexOracle& oracle) {
   const std::vector<std::string> inputs = oracle.inputs(), outputs = oracle.outputs();
   bool anyOutput = false;
   for (const FragmentCapture& capture : m.captureFragment) {
-    if (contains(outputs, capture.name)) anyOutput = true;
+    if (contains(outputs, capture.name))
+      anyOutput = true;
     else if (!contains(inputs, capture.name))
       throw UsageError(fmt::format(
           "{}:{}: capture `{}` is neither an input nor an output of oracle `{}` (inputs: {}; "
@@ -32,13 +34,15 @@ void checkCapturesAgainstOracle(const Manifest& m, const VertexOracle& oracle) {
   for (const std::string& input : inputs)
     if (std::none_of(m.captureFragment.begin(), m.captureFragment.end(),
                      [&](const FragmentCapture& c) { return c.name == input; }))
-      throw UsageError(fmt::format("{}:{}: oracle `{}` reads `{}`; capture it in "
-                                   "`capture.fragment` at a line where it holds its value",
-                                   m.path.string(), m.captureLine, m.oracle, input));
+      throw UsageError(
+          fmt::format("{}:{}: oracle `{}` reads `{}`; capture it in "
+                      "`capture.fragment` at a line where it holds its value",
+                      m.path.string(), m.captureLine, m.oracle, input));
   if (!anyOutput)
-    throw UsageError(fmt::format("{}:{}: `capture.fragment` reads none of oracle `{}`'s outputs "
-                                 "({}), so nothing would be checked",
-                                 m.path.string(), m.captureLine, m.oracle, fmt::join(outputs, ", ")));
+    throw UsageError(
+        fmt::format("{}:{}: `capture.fragment` reads none of oracle `{}`'s outputs "
+                    "({}), so nothing would be checked",
+                    m.path.string(), m.captureLine, m.oracle, fmt::join(outputs, ", ")));
 }
 
 struct Pixel {
@@ -61,8 +65,9 @@ std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels) {
                                  v.failed, v.checked);
   for (const ComponentFailure& f : v.firstFailures) {
     const Pixel& p = pixels.at(f.vertex);
-    text += fmt::format("  pixel ({}, {}) [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]\n",
-                        p.x, p.y, f.component, f.observed, f.reference, f.lo, f.hi);
+    text +=
+        fmt::format("  pixel ({}, {}) [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]\n",
+                    p.x, p.y, f.component, f.observed, f.reference, f.lo, f.hi);
   }
   return text;
 }
@@ -76,9 +81,10 @@ std::vector<FragmentProbe> probesOf(const Manifest& m) {
 
 void requireDrawingScene(const Manifest& m, const Scene& scene) {
   if (!scene.draws())
-    throw UsageError(fmt::format("scene `{}` draws nothing, so no fragment runs; "
-                                 "`capture.fragment` of {} needs a scene with [image]",
-                                 scene.name, m.id));
+    throw UsageError(
+        fmt::format("scene `{}` draws nothing, so no fragment runs; "
+                    "`capture.fragment` of {} needs a scene with [image]",
+                    scene.name, m.id));
 }
 
 }  // namespace
@@ -114,7 +120,8 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     for (int x = 0; x < scene.width; ++x) {
       bool allRead = true;
       for (std::size_t k = 0; k < m.captureFragment.size(); ++k)
-        if (contains(inputNames, m.captureFragment[k].name) && outcome.probes[k].at(x, y)[3] != 1.0f)
+        if (contains(inputNames, m.captureFragment[k].name) &&
+            outcome.probes[k].at(x, y)[3] != 1.0f)
           allRead = false;
       if (allRead) pixels.push_back({x, y});
     }
@@ -130,19 +137,22 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
       inputs[capture.name] = AttributeStream{capture.name, components, std::move(values)};
       continue;
     }
-    const std::size_t missing = static_cast<std::size_t>(
-        std::count_if(pixels.begin(), pixels.end(),
-                      [&](const Pixel& p) { return outcome.probes[k].at(p.x, p.y)[3] != 1.0f; }));
+    const std::size_t missing =
+        static_cast<std::size_t>(std::count_if(pixels.begin(), pixels.end(), [&](const Pixel& p) {
+          return outcome.probes[k].at(p.x, p.y)[3] != 1.0f;
+        }));
     if (missing)
-      check.unwritten += fmt::format("{}: not written at {} of the {} pixels where the oracle's "
-                                     "inputs were (line {} did not run there)\n",
-                                     capture.name, missing, pixels.size(), capture.line);
+      check.unwritten += fmt::format(
+          "{}: not written at {} of the {} pixels where the oracle's "
+          "inputs were (line {} did not run there)\n",
+          capture.name, missing, pixels.size(), capture.line);
     observed.push_back(CapturedVarying{capture.name, components, std::move(values)});
   }
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<OracleVarying> expected =
-      oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size()});
+      oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
+                        precisionRulesForApi(backend.driverInfo().api)});
   check.oracleSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const CapturedVarying& values : observed) {

@@ -25,8 +25,9 @@ double unitInLast(const glsl::vec3<double>& exact) {
 }
 
 // Each correctly rounded step may land on either float around its exact
-// value: an error under one ULP of the (possibly already perturbed) value.
-double rounding(double value, double error) { return ulp(std::fabs(value) + error); }
+// value: an error under the gap between the floats around the (possibly
+// already perturbed) value.
+double rounding(double value, double error) { return gapAbove(std::fabs(value) + error); }
 
 // dot(x, y) in any order, fused or not: gamma_3 * sum |x_i y_i| (Higham),
 // with unit roundoff 2^-23 for either-neighbour rounding.
@@ -52,7 +53,9 @@ std::array<double, 3> reflectErrorBudget(const Dir& I, const Dir& N) {
 }
 
 // refract: k = 1 - eta*eta*(1 - d*d); eta*I - (eta*d + sqrt(k))*N with
-// sqrt(k) = 1.0 / inversesqrt(k) (2 ULP, then 2.5 ULP).
+// sqrt(k) = 1.0 / inversesqrt(k) (2 ULP, then 2.5 ULP). The product
+// eta*eta*(1 - d*d) may be grouped either way (Mesa computes
+// eta*(eta*(1 - d*d))): its first rounding is at most 2^-23 of the whole.
 std::array<double, 3> refractErrorBudget(const Dir& I, const Dir& N, double eta) {
   const double d = test::dotOf(N, I);
   const double eD = dotError(N, I);
@@ -61,9 +64,9 @@ std::array<double, 3> refractErrorBudget(const Dir& I, const Dir& N, double eta)
   const double s2 = 1.0 - dd;
   const double eS2 = eDd + rounding(s2, eDd);
   const double e2 = eta * eta;
-  const double eE2 = rounding(e2, 0.0);
   const double m = e2 * s2;
-  const double eM = e2 * eS2 + s2 * eE2 + rounding(m, e2 * eS2 + s2 * eE2);
+  const double eFirst = 0x1p-23 * std::fabs(m);
+  const double eM = e2 * eS2 + eFirst + rounding(m, e2 * eS2 + eFirst);
   const double k = 1.0 - m;
   const double eK = eM + rounding(k, eM);
   const double r = 1.0 / std::sqrt(k);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,22 +12,36 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-TEST(OracleFp32, UlpIsTheGapBetweenFloatsOfTheBinade) {
-  EXPECT_EQ(ulp(1.0), 0x1p-23);
+// Harrison's ULP (the Vulkan spec's and dEQP's): the smallest gap between
+// floats a <= x <= b, so at an exact power of two the gap below.
+TEST(OracleFp32, UlpIsTheGapBetweenFloatsOfTheBinadeAndBelowAPowerOfTwo) {
+  EXPECT_EQ(ulp(1.0), 0x1p-24);
+  EXPECT_EQ(ulp(1.0000001), 0x1p-23);
   EXPECT_EQ(ulp(1.9999), 0x1p-23);
   EXPECT_EQ(ulp(0.75), 0x1p-24);
   EXPECT_EQ(ulp(-3.0), 0x1p-22);
-  EXPECT_EQ(ulp(0x1p-126), 0x1p-149);
+  EXPECT_EQ(ulp(-4.0), 0x1p-22);
+  EXPECT_EQ(ulp(0x1p-126), 0x1p-149);  // the gap below is a denormal gap
   EXPECT_EQ(ulp(0x1p-130), 0x1p-149);  // denormals
   EXPECT_EQ(ulp(0.0), 0x1p-149);
   EXPECT_EQ(ulp(0x1.fffffep127), 0x1p104);
 }
 
-TEST(OracleFp32, UlpMatchesTheDistanceToTheNextFloat) {
-  for (float f : {1.0f, 1.1f, 3.0e-5f, 7.5e20f, 1.0e-39f, -2.5f}) {
-    const float next = std::nextafter(std::fabs(f), std::numeric_limits<float>::infinity());
-    EXPECT_EQ(ulp(f), double(next) - std::fabs(double(f))) << f;
+TEST(OracleFp32, UlpMatchesTheSmallestDistanceToANeighbouringFloat) {
+  for (float f : {1.0f, 1.1f, 3.0e-5f, 7.5e20f, 1.0e-39f, -2.5f, 0.5f, 1024.0f}) {
+    const float a = std::fabs(f);
+    const float next = std::nextafter(a, std::numeric_limits<float>::infinity());
+    const float previous = std::nextafter(a, 0.0f);
+    const double smallest = std::min(double(next) - double(a), double(a) - double(previous));
+    EXPECT_EQ(ulp(f), smallest) << f;
   }
+}
+
+TEST(OracleFp32, GapAboveIsTheGapOfTheBinade) {
+  EXPECT_EQ(gapAbove(1.0), 0x1p-23);
+  EXPECT_EQ(gapAbove(0.75), 0x1p-24);
+  EXPECT_EQ(gapAbove(0x1p-130), 0x1p-149);
+  EXPECT_EQ(gapAbove(0x1.fffffep127), 0x1p104);
 }
 
 TEST(OracleFp32, BracketsARealBetweenTheTwoFloatsAroundIt) {

@@ -7,24 +7,44 @@
 
 namespace snell::glsl {
 
+// Vulkan states an inherited built-in's bound as [x - E, x + E] about the
+// exact result x (oracle/precision_rules.h): under its rules the allowed
+// set of an Interval result is made symmetric about its ideal value.
+inline Interval inherited(const Interval& value) {
+  return currentPrecisionRules() == PrecisionRules::Vulkan ? symmetricAboutIdeal(value) : value;
+}
+template <class T>
+T inherited(const T& value) {
+  return value;
+}
+template <class T, int Size>
+vec<T, Size> inherited(const vec<T, Size>& v) {
+  vec<T, Size> r;
+  for (int k = 0; k < Size; ++k) r[k] = inherited(v[k]);
+  return r;
+}
+
 template <class T, int Size>
 T dot(const vec<T, Size>& x, const vec<T, Size>& y) {
-  return sumOfProducts(x.components(), y.components());
+  return inherited(sumOfProducts(x.components(), y.components()));
 }
 
 template <class T, int Size>
 T length(const vec<T, Size>& x) {
-  return sqrt(dot(x, x));
+  return inherited(sqrt(dot(x, x)));
 }
 
+// GLSL: x / length(x); Vulkan: x * inversesqrt(dot(x, x)).
 template <class T, int Size>
 vec<T, Size> normalize(const vec<T, Size>& x) {
+  if (currentPrecisionRules() == PrecisionRules::Vulkan)
+    return inherited(x * inversesqrt(dot(x, x)));
   return x / length(x);
 }
 
 template <class T, int Size>
 vec<T, Size> reflect(const vec<T, Size>& I, const vec<T, Size>& N) {
-  return I - lit<T>(2.0) * dot(N, I) * N;
+  return inherited(I - lit<T>(2.0) * dot(N, I) * N);
 }
 
 // k = 1.0 - eta * eta * (1.0 - dot(N, I) * dot(N, I));
@@ -38,18 +58,29 @@ vec<T, Size> refract(const vec<T, Size>& I, const vec<T, Size>& N, const T& eta)
   const T k = lit<T>(1.0) - eta * eta * (lit<T>(1.0) - d * d);
   return branch(
       k < lit<T>(0.0), [&] { return splat<T, Size>(lit<T>(0.0)); },
-      [&] { return eta * I - (eta * d + sqrt(max(k, lit<T>(0.0)))) * N; });
+      [&] { return inherited(eta * I - (eta * d + sqrt(max(k, lit<T>(0.0)))) * N); });
 }
 
-// x * (1 - a) + y * a
+// x * (1 - a) + y * a. Compilers also lower it as x + (y - x) * a (Mesa's
+// flrp becomes an fma of that form on both APIs), a distributed form that
+// the GLSL rules alone would not reach: like dEQP, the GLSL rules take
+// both (Vulkan's distributivity already covers the second).
 template <Number T>
 T mix(const T& x, const T& y, const T& a) {
-  return x * (lit<T>(1.0) - a) + y * a;
+  const T written = x * (lit<T>(1.0) - a) + y * a;
+  if constexpr (std::same_as<T, Interval>) {
+    if (currentPrecisionRules() == PrecisionRules::Glsl) return hull(written, x + (y - x) * a);
+    return inherited(written);
+  } else {
+    return written;
+  }
 }
 
 template <class T, int Size>
 vec<T, Size> mix(const vec<T, Size>& x, const vec<T, Size>& y, const T& a) {
-  return x * (lit<T>(1.0) - a) + y * a;
+  vec<T, Size> r;
+  for (int k = 0; k < Size; ++k) r[k] = mix(x[k], y[k], a);
+  return r;
 }
 
 }  // namespace snell::glsl

@@ -8,24 +8,38 @@
 #include <concepts>
 #include <cstddef>
 #include <span>
+#include <type_traits>
 
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"
+#include "oracle/precision_rules.h"
 
 namespace snell::glsl {
 
-// The number types a listing is instantiated for.
+// The number types a listing is instantiated for: double (exact value),
+// float (a strict fp32 machine), Interval (what the spec allows). Tests add
+// their own (an adversarial fp32 machine) by specialising IsNumber.
 template <class T>
-concept Number = std::same_as<T, double> || std::same_as<T, float> || std::same_as<T, Interval>;
+struct IsNumber : std::false_type {};
+template <>
+struct IsNumber<double> : std::true_type {};
+template <>
+struct IsNumber<float> : std::true_type {};
+template <>
+struct IsNumber<Interval> : std::true_type {};
 
-// A GLSL float literal or `const float`: the nearest float, in T.
+template <class T>
+concept Number = IsNumber<T>::value;
+
+// A GLSL float literal or `const float`: the nearest float, in T. A number
+// type that models constant folding (Interval, test machines) gets the
+// decimal as written through T::literal.
 template <Number T>
 T lit(double value) {
-  const float nearest = nearestFloat(value);
-  if constexpr (std::same_as<T, Interval>) {
-    return Interval::point(nearest);
+  if constexpr (requires { T::literal(value); }) {
+    return T::literal(value);
   } else {
-    return static_cast<T>(nearest);
+    return static_cast<T>(nearestFloat(value));
   }
 }
 
@@ -55,6 +69,8 @@ inline double max(double a, double b) { return b > a ? b : a; }
 inline float max(float a, float b) { return b > a ? b : a; }
 inline double min(double a, double b) { return b < a ? b : a; }
 inline float min(float a, float b) { return b < a ? b : a; }
+inline double abs(double x) { return std::fabs(x); }
+inline float abs(float x) { return std::fabs(x); }
 
 // dot() and matrix * vector in one fixed order: the order a strict machine
 // uses. (The Interval overload covers every order.)

@@ -59,7 +59,8 @@ struct BlogDiffraction {
 
   void main() {
     using namespace glsl;
-    using diffraction::abs;
+    using glsl::abs;
+    using snell::abs;
     const vec4<T> HighlightColor(lit<T>(1.0), lit<T>(1.0), lit<T>(1.0), lit<T>(1.0));
 
     // vec3 objPosition = vec3 (gl_ModelViewMatrix * gl_Vertex);

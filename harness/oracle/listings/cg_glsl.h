@@ -8,16 +8,10 @@
 
 namespace snell::listings {
 
-inline double abs(double x) { return std::fabs(x); }
-inline float abs(float x) { return std::fabs(x); }
-
-// abs is exact (a sign change), so the allowed results are exactly the
-// magnitudes of the allowed arguments; a range across 0 reaches down to 0.
-inline Interval abs(const Interval& x) {
-  if (x.undefined || x.lo >= 0.0) return x;
-  if (x.hi <= 0.0) return -x;
-  return Interval(0.0, std::max(-x.lo, x.hi));
-}
+// abs() over every number type: glsl::abs for double and float,
+// snell::abs (oracle/interval_builtins.h) for Interval.
+using glsl::abs;
+using snell::abs;
 
 // mat3(m): the upper-left 3x3, as Cg's (float3x3)m also takes it.
 template <class T>

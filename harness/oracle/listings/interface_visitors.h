@@ -133,4 +133,42 @@ class CaptureOutputs {
   std::size_t next_ = 0;
 };
 
+// Every output component of a run, in visit order.
+template <glsl::Number T>
+class CollectOutputs {
+ public:
+  template <class X>
+  void input(const char*, X&) {}
+  template <class X>
+  void uniform(const char*, X&) {}
+  void constant(const char*, T&) {}
+  template <class X>
+  void output(const char*, X& variable) {
+    forEachComponent(variable, [&](T& value) { values.push_back(value); });
+  }
+
+  std::vector<T> values;
+};
+
+// Sets every output component from `values`, in visit order.
+template <glsl::Number T>
+class AssignOutputs {
+ public:
+  explicit AssignOutputs(const std::vector<T>& values) : values_(values) {}
+
+  template <class X>
+  void input(const char*, X&) {}
+  template <class X>
+  void uniform(const char*, X&) {}
+  void constant(const char*, T&) {}
+  template <class X>
+  void output(const char*, X& variable) {
+    forEachComponent(variable, [&](T& value) { value = values_[next_++]; });
+  }
+
+ private:
+  const std::vector<T>& values_;
+  std::size_t next_ = 0;
+};
+
 }  // namespace snell::listings

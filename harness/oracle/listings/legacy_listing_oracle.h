@@ -26,7 +26,8 @@ class LegacyListingOracle final : public VertexOracle {
 
   std::vector<OracleVarying> evaluate(const OracleInput& input) const override {
     const UniformMap uniforms = withDerivedLegacyState(input.uniforms);
-    return inner_.evaluate({uniforms, input.constants, input.attributes, input.vertexCount});
+    return inner_.evaluate(
+        {uniforms, input.constants, input.attributes, input.vertexCount, input.rules});
   }
 
  private:

@@ -4,11 +4,13 @@
 // `void main()`, and `template <class V> void visit(V&)` naming its inputs,
 // uniforms, constants and outputs. ListingOracle runs it once per vertex for
 // double, float and Interval and fills the OracleVaryings.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "oracle/branch_paths.h"
 #include "oracle/interval.h"
 #include "oracle/listings/interface_checks.h"
 #include "oracle/listings/interface_visitors.h"
@@ -42,10 +44,11 @@ class ListingOracle final : public VertexOracle {
 
   std::vector<OracleVarying> evaluate(const OracleInput& input) const override {
     checkOracleInput(name_, interface_.entries(), input);
+    const UsePrecisionRules rules(input.rules);
     std::vector<OracleVarying> varyings = emptyVaryings(input.vertexCount);
     run<double>(input, varyings);
     run<float>(input, varyings);
-    run<Interval>(input, varyings);
+    runIntervals(input, varyings);
     return varyings;
   }
 
@@ -79,6 +82,93 @@ class ListingOracle final : public VertexOracle {
       shader.main();
       CaptureOutputs<T> outputs(varyings, vertex);
       shader.visit(outputs);
+    }
+  }
+
+  // Every output component of one run, in visit order.
+  template <class T>
+  static std::vector<T> outputsOf(Shader<T>& shader) {
+    CollectOutputs<T> collect;
+    shader.visit(collect);
+    return collect.values;
+  }
+
+  static void runIntervals(const OracleInput& input, std::vector<OracleVarying>& varyings) {
+    Shader<Interval> shader{};
+    BindUniforms<Interval> uniforms(input.uniforms, input.constants);
+    shader.visit(uniforms);
+    Shader<double> replayed{};
+    BindUniforms<double> replayedUniforms(input.uniforms, input.constants);
+    replayed.visit(replayedUniforms);
+    BranchPaths paths;
+    const UseBranchPaths active(&paths);
+    for (std::size_t vertex = 0; vertex < input.vertexCount; ++vertex) {
+      BindVertex<Interval> inputs(input.attributes, vertex);
+      shader.visit(inputs);
+      std::vector<std::vector<Interval>> ways;
+      std::vector<std::vector<bool>> traces;
+      const bool kept = paths.explore([&] {
+        shader.main();
+        ways.push_back(outputsOf(shader));
+        traces.push_back(paths.trace());
+      });
+      if (!kept) {
+        ways.erase(ways.begin(), ways.end() - 1);
+        for (OracleVarying& v : varyings) ++v.mergedToHull;
+      }
+      CaptureOutputs<Interval> hullOutputs(varyings, vertex);
+      std::vector<Interval> hullValues = ways[0];
+      for (std::size_t w = 1; w < ways.size(); ++w)
+        for (std::size_t k = 0; k < hullValues.size(); ++k)
+          hullValues[k] = hull(hullValues[k], ways[w][k]);
+      storeOutputs(shader, hullValues, hullOutputs);
+      if (ways.size() < 2) continue;
+      BindVertex<double> replayedInputs(input.attributes, vertex);
+      replayed.visit(replayedInputs);
+      std::vector<std::vector<double>> references;
+      for (const std::vector<bool>& trace : traces) {
+        BranchReplay replay(trace);
+        const UseBranchReplay replaying(&replay);
+        replayed.main();
+        references.push_back(outputsOf(replayed));
+      }
+      addAlternatives(varyings, vertex, ways, references);
+    }
+  }
+
+  // Writes `values` (one run's output components) through the capture visitor.
+  static void storeOutputs(Shader<Interval>& shader, const std::vector<Interval>& values,
+                           CaptureOutputs<Interval>& capture) {
+    AssignOutputs<Interval> assign(values);
+    shader.visit(assign);
+    shader.visit(capture);
+  }
+
+  // Each varying's distinct ways at this vertex, when it has more than one.
+  static void addAlternatives(std::vector<OracleVarying>& varyings, std::size_t vertex,
+                              const std::vector<std::vector<Interval>>& ways,
+                              const std::vector<std::vector<double>>& references) {
+    std::size_t offset = 0;
+    for (OracleVarying& varying : varyings) {
+      const auto components = static_cast<std::size_t>(varying.components);
+      SampleAlternatives sample{vertex, {}};
+      for (std::size_t w = 0; w < ways.size(); ++w) {
+        OracleAlternative way;
+        for (std::size_t c = 0; c < components; ++c) {
+          const Interval& value = ways[w][offset + c];
+          way.reference.push_back(references[w][offset + c]);
+          way.lo.push_back(value.lo);
+          way.hi.push_back(value.hi);
+          way.undefined.push_back(value.undefined ? 1 : 0);
+        }
+        const auto same = [&](const OracleAlternative& other) {
+          return other.lo == way.lo && other.hi == way.hi && other.undefined == way.undefined;
+        };
+        if (std::none_of(sample.ways.begin(), sample.ways.end(), same))
+          sample.ways.push_back(std::move(way));
+      }
+      if (sample.ways.size() > 1) varying.alternatives.push_back(std::move(sample));
+      offset += components;
     }
   }
 

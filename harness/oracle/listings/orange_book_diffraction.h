@@ -15,16 +15,6 @@ namespace snell::listings {
 
 namespace diffraction {
 
-// GLSL's abs(): exact.
-inline double abs(double x) { return std::fabs(x); }
-inline float abs(float x) { return std::fabs(x); }
-inline Interval abs(const Interval& x) {
-  if (x.undefined) return Interval::unconstrained();
-  if (x.lo >= 0.0) return x;
-  if (x.hi <= 0.0) return -x;
-  return Interval(0.0, std::max(-x.lo, x.hi));
-}
-
 // GLSL's max(vec3, float): exact, component by component.
 template <class T>
 glsl::vec3<T> max(const glsl::vec3<T>& x, const T& y) {
@@ -95,7 +85,8 @@ struct OrangeBookDiffraction {
 
   void main() {
     using namespace glsl;
-    using diffraction::abs;
+    using glsl::abs;
+    using snell::abs;
     const vec4<T> HighlightColor(lit<T>(1.0), lit<T>(1.0), lit<T>(1.0), lit<T>(1.0));
 
     vec3<T> objPosition = vec3<T>(MVMatrix * MCVertex);

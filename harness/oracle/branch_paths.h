@@ -1,0 +1,92 @@
+#pragma once
+// Alternatives: where the spec lets an implementation take either way of a
+// branch (an Interval condition whose allowed values agree on neither
+// outcome, as in refract()'s k < 0 near the critical angle), each way is a
+// separate alternative, not merged into one box. A listing's main() is run
+// once per combination of such choices (a path); each path gives a
+// consistent value for every output, so a read-back vector passes only when
+// all its components fit one path, never a mix of two (dEQP's `cond`
+// merges them into a box; snell keeps them apart).
+//
+// glsl::branch consults the explorer that is active on this thread: with
+// none, an Unknown condition takes the hull of both ways, as before. Past
+// kMaxBranchPaths paths a sample falls back to the hull: stated, not silent
+// (explorePaths reports it).
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+namespace snell {
+
+inline constexpr std::size_t kMaxBranchPaths = 16;
+
+class BranchPaths {
+ public:
+  // The outcome at a branch whose condition is Unknown: `then` (true) or
+  // `otherwise` (false) for this path, or nullopt-like `hull` when the path
+  // count is exceeded (the caller takes the hull of both ways).
+  enum class Choice { Then, Otherwise, Hull };
+  Choice chooseUnknown();
+  // Every branch outcome of the run, decided or chosen, in order: a double
+  // evaluation replays them to get the exact value along the same path.
+  void record(bool tookThen) { trace_.push_back(tookThen); }
+
+  // Runs `body` once per path (at least once). Returns false when the paths
+  // exceeded kMaxBranchPaths: `body` then ran once more with every unknown
+  // branch merged to its hull, and only that last run counts.
+  bool explore(const std::function<void()>& body);
+
+  // The outcomes of the run that just ended (for BranchReplay).
+  const std::vector<bool>& trace() const { return trace_; }
+  // Whether the last explore() exceeded kMaxBranchPaths.
+  bool mergedToHull() const { return merged_; }
+
+ private:
+  bool next();
+
+  std::vector<bool> prefix_;  // forced choices at unknown branches, in order
+  std::vector<bool> taken_;   // choices made at unknown branches in this run
+  std::vector<bool> trace_;   // every outcome in this run
+  bool hullMode_ = false;
+  bool merged_ = false;
+};
+
+// Replays recorded outcomes into glsl::branch(bool, ...) calls, so that a
+// double evaluation follows a path an Interval evaluation took.
+class BranchReplay {
+ public:
+  explicit BranchReplay(const std::vector<bool>& outcomes) : outcomes_(outcomes) {}
+  bool next();
+
+ private:
+  const std::vector<bool>& outcomes_;
+  std::size_t next_ = 0;
+};
+
+// The explorer / replay active on this thread (nullptr: none).
+BranchPaths* activeBranchPaths();
+BranchReplay* activeBranchReplay();
+
+class UseBranchPaths {
+ public:
+  explicit UseBranchPaths(BranchPaths* paths);
+  ~UseBranchPaths();
+  UseBranchPaths(const UseBranchPaths&) = delete;
+  UseBranchPaths& operator=(const UseBranchPaths&) = delete;
+
+ private:
+  BranchPaths* previous_;
+};
+
+class UseBranchReplay {
+ public:
+  explicit UseBranchReplay(BranchReplay* replay);
+  ~UseBranchReplay();
+  UseBranchReplay(const UseBranchReplay&) = delete;
+  UseBranchReplay& operator=(const UseBranchReplay&) = delete;
+
+ private:
+  BranchReplay* previous_;
+};
+
+}  // namespace snell

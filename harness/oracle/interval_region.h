@@ -1,0 +1,72 @@
+#pragma once
+// The open region behind an Interval: a sum or product whose rounding steps
+// a compiler may still regroup with the operation that consumes it.
+//
+// Why a few numbers suffice. Expand any expression built from + - * over
+// leaves (inputs, literals, and results of other operations, each with its
+// own error bound) into monomials. Every formula that associativity,
+// commutativity and distributivity turn it into has the same monomials, and
+// its computed value is sum_m c_m * mono_m * prod_j (1 + d_j), one factor
+// per rounding on the monomial's path, |d_j| <= u = 2^-23 (either
+// neighbouring float), plus an absolute error up to 2^-126 per rounding
+// where a result may be flushed or denormal. So for every such formula
+//   |computed - ideal| <= gamma(k) * A + (A - A0) + k * 2^-126 * S,
+// with A the sum of |monomials| at the leaves' magnitudes plus their error
+// bounds, A0 the same without the errors, k the roundings on a path before
+// the last one, S the largest product of factor magnitudes a flushed value
+// can be multiplied by, and gamma(k) = k u / (1 - k u) (Higham). The last
+// rounding is applied exactly, as the choice of the float on either side.
+//
+// Without distributivity (the GLSL rules) the shape is narrower and the
+// bound tighter: a region is a sum of terms that are leaves or products of
+// leaves; each product term rounds only relative to its own magnitude, and
+// the sum's own roundings relative to the partial sums.
+#include <cstdint>
+
+#include "oracle/precision_rules.h"
+
+namespace snell {
+
+struct IntervalRegion {
+  enum class Kind : std::uint8_t { Leaf, Product, Sum };
+  Kind kind = Kind::Leaf;
+  double mag = 0.0;     // A: sum of |monomials|, leaf errors included
+  double mag0 = 0.0;    // A0: the same with exact leaves
+  double maxSub = 1.0;  // S: max(1, largest product of factor magnitudes)
+  int terms = 1;        // monomials in the expansion
+  int degree = 1;       // factors per monomial, at most
+  // Products (GLSL): factors, and those that are exact powers of two (a
+  // multiplication by one rounds nothing, and it may be the last one).
+  int factors = 1;
+  int exactFactors = 0;
+  // Sums (GLSL): the rounding and flush bounds of the product terms, each
+  // relative to its own magnitude (a term's last multiplication is fused
+  // or rounded inside the sum, so all of its roundings count).
+  double termRounding = 0.0;
+  double termFlush = 0.0;
+};
+
+inline constexpr double kUnitRoundoff = 0x1p-23;
+inline constexpr double kFlushError = 0x1p-126;
+
+// gamma(k) = k u / (1 - k u), rounded up.
+double gammaBound(int k);
+
+// A closed value: its ideal magnitude and its error bound. `exactPowerOfTwo`
+// for a literal +-2^n, which multiplies without rounding.
+IntervalRegion leafRegion(double maxAbsIdeal, double err, bool exactPowerOfTwo);
+
+// The region of a + b (or a - b) and of a * b. Under the GLSL rules the
+// caller closes a sum before it becomes a factor (no distributivity).
+IntervalRegion sumRegion(const IntervalRegion& a, const IntervalRegion& b);
+IntervalRegion productRegion(const IntervalRegion& a, const IntervalRegion& b);
+
+// Bound on |value before its last rounding - ideal| for every regrouping
+// `rules` allow. A leaf has no pending rounding: its bound is its error.
+double pendingError(const IntervalRegion& region, PrecisionRules rules);
+
+// Whether some regrouping may overflow a partial result before the last
+// operation (an overflowing last result is the float set's business).
+bool mayOverflowInside(const IntervalRegion& region);
+
+}  // namespace snell
