@@ -27,9 +27,19 @@ struct DriverInfo {
   std::string deviceType;     // "cpu", "integrated-gpu", ...
 };
 
+// One message of the compiler, placed: the stage's own file and line, so
+// that an expected compile error can be pinned to where it must be.
+struct CompileDiagnostic {
+  std::string stage;  // "vertex", "fragment" or "link"
+  int line = 0;       // in that stage's file; 0 when the message names no line
+  bool error = true;  // false: a warning
+  std::string message;
+};
+
 struct CompileOutcome {
   bool ok = false;
   std::string log;  // compiler/linker diagnostics, empty when clean
+  std::vector<CompileDiagnostic> diagnostics;  // the log's placed messages, parsed by the backend
 };
 
 struct CaptureJob {

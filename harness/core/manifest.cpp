@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "core/errors.h"
+#include "core/toml_keys.h"
 
 namespace snell {
 namespace {
@@ -26,6 +27,11 @@ class ManifestReader {
   }
 
   static int lineOf(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+
+  void onlyKeys(const toml::table& table, std::initializer_list<std::string_view> known,
+                std::string_view where) const {
+    rejectUnknownKeys(table, known, path_, where);
+  }
 
   std::string requiredString(const toml::table& table, std::string_view key, int tableLine) const {
     const toml::node* node = table.get(key);
@@ -70,6 +76,7 @@ class ManifestReader {
     ValueType type{};
     const toml::array* array = nullptr;
     if (const toml::table* typed = node.as_table()) {
+      onlyKeys(*typed, {"type", "value"}, fmt::format("the literal of `{}`", name));
       const std::string typeName = requiredString(*typed, "type", lineOf(node));
       static const std::pair<const char*, ValueType> kTypes[] = {
           {"float", ValueType::Float}, {"vec2", ValueType::Vec2}, {"vec3", ValueType::Vec3},
@@ -137,6 +144,7 @@ class ManifestReader {
     std::vector<FragmentCapture> out;
     for (const toml::node& element : *array) {
       const toml::table& table = *element.as_table();
+      onlyKeys(table, {"name", "type", "line"}, "a `capture.fragment` entry");
       FragmentCapture capture;
       capture.manifestLine = lineOf(element);
       capture.name = requiredString(table, "name", capture.manifestLine);
@@ -164,6 +172,49 @@ class ManifestReader {
     return out;
   }
 
+  // [compile_error.gl] stage = "fragment", line = 4, pattern = "syntax error"
+  std::map<std::string, ExpectedDiagnostic> expectedErrors(const toml::table& root,
+                                                           const Manifest& m) const {
+    std::map<std::string, ExpectedDiagnostic> out;
+    const toml::node* node = root.get("compile_error");
+    if (!node) {
+      if (m.expect == Expectation::CompileError)
+        fail(1, "`expect = \"compile-error\"` needs the expected diagnostic per API: "
+                "[compile_error.gl] and [compile_error.vk] with stage, line and (optionally) "
+                "pattern");
+      return out;
+    }
+    if (m.expect != Expectation::CompileError)
+      fail(lineOf(*node), "`compile_error` is only for a listing with `expect = \"compile-error\"`");
+    const toml::table* table = node->as_table();
+    if (!table) fail(lineOf(*node), "`compile_error` must be a table: [compile_error.gl] ...");
+    onlyKeys(*table, {"gl", "vk"}, "`compile_error` (one table per API)");
+    for (const auto& [api, value] : *table) {
+      const toml::table* entry = value.as_table();
+      if (!entry)
+        fail(lineOf(value), fmt::format("`compile_error.{}` must be a table", api.str()));
+      onlyKeys(*entry, {"stage", "line", "pattern"}, fmt::format("`compile_error.{}`", api.str()));
+      ExpectedDiagnostic d;
+      d.manifestLine = lineOf(value);
+      d.stage = requiredString(*entry, "stage", d.manifestLine);
+      if (d.stage != "vertex" && d.stage != "fragment")
+        fail(d.manifestLine, fmt::format("`compile_error.{}.stage` must be \"vertex\" or "
+                                         "\"fragment\"", api.str()));
+      const toml::node* line = entry->get("line");
+      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
+        fail(d.manifestLine, fmt::format("`compile_error.{}.line` must be the line (from 1) the "
+                                         "diagnostic points at", api.str()));
+      d.line = static_cast<int>(*line->value<std::int64_t>());
+      d.pattern = optionalString(*entry, "pattern");
+      out[std::string(api.str())] = d;
+    }
+    for (const char* api : {"gl", "vk"})
+      if (!out.count(api) && !m.notSupported.count(api))
+        fail(lineOf(*node), fmt::format("`compile_error` has no `{}` entry: name the diagnostic "
+                                        "that API's compiler gives", api));
+    return out;
+  }
+
   // image = { fail = 0.004, warn = 0.002, failpercent = 0, hardfail = 0.05 }
   ImageTolerance imageTolerance(const toml::table& caseTable, int caseLine) const {
     const toml::node* node = caseTable.get("image");
@@ -171,6 +222,7 @@ class ManifestReader {
       fail(caseLine, "the \"image\" check needs `image = { fail = ..., warn = ..., failpercent = "
                      "..., hardfail = ... }` with the derivation in a comment");
     const toml::table& table = *node->as_table();
+    onlyKeys(table, {"fail", "warn", "failpercent", "hardfail"}, "`image`");
     auto number = [&](std::string_view key) {
       const toml::node* value = table.get(key);
       if (!value) fail(lineOf(*node), fmt::format("`image` is missing `{}`", key));
@@ -192,11 +244,16 @@ class ManifestReader {
       fail(static_cast<int>(error.source().begin.line),
            fmt::format("not valid TOML: {}", error.description()));
     }
+    onlyKeys(root, {"id", "title", "source", "profile", "stages", "oracle", "constants", "timeout",
+                    "inputs", "uniforms", "capture", "expect", "compile_error", "max_undefined",
+                    "not_supported", "case"},
+             "the manifest");
     Manifest m;
     m.path = path_;
     m.id = requiredString(root, "id", 1);
     m.title = requiredString(root, "title", 1);
     const toml::table& source = requiredTable(root, "source", 1);
+    onlyKeys(source, {"file", "where"}, "`source`");
     m.source.file = requiredString(source, "file", lineOf(source));
     m.source.where = requiredString(source, "where", lineOf(source));
 
@@ -206,6 +263,7 @@ class ManifestReader {
     else fail(lineOf(*root.get("profile")), fmt::format("profile `{}`: use core or compatibility", profile));
 
     const toml::table& stages = requiredTable(root, "stages", 1);
+    onlyKeys(stages, {"vertex", "fragment"}, "`stages`");
     m.vertexFile = requiredString(stages, "vertex", lineOf(stages));
     m.fragmentFile = optionalString(stages, "fragment");
     m.oracle = requiredString(root, "oracle", 1);
@@ -229,6 +287,7 @@ class ManifestReader {
     m.uniforms = bindings(root, "uniforms");
 
     const toml::table& capture = requiredTable(root, "capture", 1);
+    onlyKeys(capture, {"vertex", "fragment"}, "`capture`");
     m.captureLine = lineOf(capture);
     if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
     if (const toml::node* fragment = capture.get("fragment"))
@@ -245,6 +304,11 @@ class ManifestReader {
     else if (expect == "compile-error") m.expect = Expectation::CompileError;
     else fail(lineOf(*root.get("expect")),
               fmt::format("expect `{}`: use \"pass\" or \"compile-error\"", expect));
+    if (const toml::node* undefined = root.get("max_undefined")) {
+      if (!numeric(*undefined) || *undefined->value<double>() < 0 || *undefined->value<double>() > 1)
+        fail(lineOf(*undefined), "`max_undefined` must be a fraction from 0 to 1 (0.01 is 1 %)");
+      m.maxUndefinedFraction = *undefined->value<double>();
+    }
     if (const toml::node* unsupported = root.get("not_supported")) {
       const toml::table* table = unsupported->as_table();
       if (!table) fail(lineOf(*unsupported), "`not_supported` must be a table: { vk = \"reason\" }");
@@ -258,6 +322,7 @@ class ManifestReader {
         m.notSupported[std::string(backend.str())] = *reason.value<std::string>();
       }
     }
+    m.expectedErrors = expectedErrors(root, m);
 
     const toml::node* cases = root.get("case");
     if (!cases) fail(1, "no [[case]]: add at least one, e.g. [[case]] scene = \"sphere\"");
@@ -266,6 +331,7 @@ class ManifestReader {
       fail(lineOf(*cases), "`case` must be written as [[case]] tables");
     for (const toml::node& node : *caseArray) {
       const toml::table& table = *node.as_table();
+      onlyKeys(table, {"scene", "checks", "image"}, "a [[case]]");
       CaseSpec spec;
       spec.line = lineOf(node);
       spec.scene = requiredString(table, "scene", spec.line);

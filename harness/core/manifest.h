@@ -55,6 +55,17 @@ struct FragmentCapture {
 // What a listing is expected to do when it runs.
 enum class Expectation { Pass, CompileError };
 
+// The diagnostic a listing kept as published must fail with on one API:
+// an error at `line` of the `stage` file, whose text contains `pattern`
+// (when given). Any other failure to compile is a Fail, not the expected
+// error.
+struct ExpectedDiagnostic {
+  std::string stage;    // "vertex" or "fragment"
+  int line = 0;         // in that stage's file
+  std::string pattern;  // a piece of the message; empty: any error at that line
+  int manifestLine = 0;
+};
+
 struct Manifest {
   std::filesystem::path path;  // the manifest file
   std::string id;
@@ -74,6 +85,12 @@ struct Manifest {
   // `expect = "compile-error"`: as published, the listing must not compile;
   // the case passes as ExpectedCompileError with the diagnostic quoted.
   Expectation expect = Expectation::Pass;
+  // `[compile_error.gl]`, `[compile_error.vk]`: the expected diagnostic per
+  // API, required with `expect = "compile-error"`.
+  std::map<std::string, ExpectedDiagnostic> expectedErrors;
+  // `max_undefined`: the largest fraction of a capture's samples the spec
+  // may leave undefined before the case fails (nothing gated is no pass).
+  double maxUndefinedFraction = 0.01;
   // `not_supported = { vk = "reason" }`: backends the listing cannot run on,
   // each with the reason the report gives.
   std::map<std::string, std::string> notSupported;

@@ -5,6 +5,7 @@
 #include <toml++/toml.h>
 
 #include "core/errors.h"
+#include "core/toml_keys.h"
 
 namespace snell {
 namespace {
@@ -68,6 +69,8 @@ class SceneReader {
       throw UsageError(fmt::format("{}:{}: not valid TOML: {}", path_.string(),
                                    error.source().begin.line, error.description()));
     }
+    rejectUnknownKeys(root, {"description", "geometry", "model", "camera", "environment", "image"},
+                      path_, "the scene");
     SceneFile s;
     s.path = path_;
     s.name = path_.stem().string();
@@ -79,6 +82,12 @@ class SceneReader {
     const toml::node* shape = geometry.get("shape");
     if (!shape || !shape->is_string()) fail(&geometry, "`geometry.shape` must be \"sphere\", \"torus\", \"sweep\" or \"fullscreen\"");
     s.shape = std::string(*shape->value<std::string>());
+    if (s.shape == "sphere") rejectUnknownKeys(geometry, {"shape", "stacks", "slices"}, path_, "[geometry] of a sphere");
+    if (s.shape == "torus")
+      rejectUnknownKeys(geometry, {"shape", "major_radius", "minor_radius", "rings", "sides"}, path_,
+                        "[geometry] of a torus");
+    if (s.shape == "sweep") rejectUnknownKeys(geometry, {"shape", "count", "seed"}, path_, "[geometry] of a sweep");
+    if (s.shape == "fullscreen") rejectUnknownKeys(geometry, {"shape"}, path_, "[geometry] of a full-screen pass");
     if (s.shape == "sphere") {
       s.stacks = positive(geometry, "stacks");
       s.slices = positive(geometry, "slices");
@@ -96,10 +105,12 @@ class SceneReader {
       fail(shape, fmt::format("unknown shape `{}`; use sphere, torus, sweep or fullscreen", s.shape));
     }
     if (const toml::table* model = table(root, "model", false)) {
+      rejectUnknownKeys(*model, {"rotation_axis", "rotation_degrees"}, path_, "[model]");
       s.modelAxis = vec3(*model, "rotation_axis", s.modelAxis);
       s.modelDegrees = number(*model, "rotation_degrees", 0, false);
     }
     const toml::table& camera = *table(root, "camera", true);
+    rejectUnknownKeys(camera, {"eye", "center", "up", "fovy_degrees", "near", "far"}, path_, "[camera]");
     s.eye = vec3(camera, "eye", s.eye);
     s.center = vec3(camera, "center", s.center);
     s.up = vec3(camera, "up", s.up);
@@ -108,6 +119,8 @@ class SceneReader {
     s.zFar = number(camera, "far", s.zFar, false);
     if (!(s.zNear > 0 && s.zFar > s.zNear)) fail(&camera, "the camera needs 0 < near < far");
     if (const toml::table* env = table(root, "environment", false)) {
+      rejectUnknownKeys(*env, {"size", "rotation_axis", "rotation_degrees", "translation"}, path_,
+                        "[environment]");
       s.environmentSize = static_cast<int>(number(*env, "size", s.environmentSize, false));
       s.environmentAxis = vec3(*env, "rotation_axis", s.environmentAxis);
       s.environmentDegrees = number(*env, "rotation_degrees", 0, false);
@@ -115,6 +128,7 @@ class SceneReader {
     }
     if (const toml::table* image = table(root, "image", false)) {
       if (s.shape == "sweep") fail(image, "a sweep draws nothing: remove [image]");
+      rejectUnknownKeys(*image, {"width", "height"}, path_, "[image]");
       s.width = positive(*image, "width");
       s.height = positive(*image, "height");
     } else if (s.shape != "sweep") {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "oracle/fp32.h"
 
@@ -95,15 +96,28 @@ Range exactProductRange(double alo, double ahi, double blo, double bhi) {
 }
 
 Range quotientRange(double alo, double ahi, double blo, double bhi) {
-  const std::array<double, 4> quotients = {alo / blo, alo / bhi, ahi / blo, ahi / bhi};
+  const std::array<std::pair<double, double>, 4> operands = {
+      std::pair{alo, blo}, std::pair{alo, bhi}, std::pair{ahi, blo}, std::pair{ahi, bhi}};
   Range r{kInf, -kInf};
-  for (double q : quotients) {
+  for (const auto& [a, b] : operands) {
+    const double q = a / b;
     if (std::isnan(q)) return {kNaN, kNaN};
-    r.lo = std::min(r.lo, q);
-    r.hi = std::max(r.hi, q);
+    // a - q*b is exact in one fma (barring underflow), so its sign says on
+    // which side of q the exact quotient lies: an exact quotient stays a
+    // point, and a power of two is not widened into the larger gap above it.
+    const double remainder = std::fma(-q, b, a);
+    const bool remainderExact = std::isfinite(q) && std::fabs(a) > 0x1p-969;
+    // The sign of (exact - q) = remainder / b, without a division that might underflow.
+    const double exactMinusQ = !remainderExact ? kNaN
+                               : remainder == 0.0 ? 0.0
+                               : (remainder > 0.0) == (b > 0.0) ? 1.0
+                                                                : -1.0;
+    const double below = exactMinusQ >= 0.0 ? q : nextDown(q);
+    const double above = exactMinusQ <= 0.0 ? q : nextUp(q);
+    r.lo = std::min(r.lo, below);
+    r.hi = std::max(r.hi, above);
   }
-  // The double quotients are within half a double ULP of the exact ones.
-  return {nextDown(r.lo), nextUp(r.hi)};
+  return r;
 }
 
 Range roundedSum(double alo, double ahi, double blo, double bhi) {

@@ -126,23 +126,53 @@ void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, Cas
 }
 
 // A listing kept as published although it does not compile: it passes as
-// ExpectedCompileError when the driver refuses it, with the diagnostic
-// quoted, and fails when the driver takes it.
+// ExpectedCompileError when the driver refuses it with the diagnostic the
+// manifest pins (stage, line, pattern), and fails when the driver takes it
+// or refuses it for another reason.
 void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
+  const Manifest& m = *c.manifest;
   const auto backendStart = std::chrono::steady_clock::now();
-  const CompileOutcome outcome = backend_.compile(loadProgram(*c.manifest));
+  const ProgramSource program = loadProgram(m);
+  const CompileOutcome outcome = backend_.compile(program);
   result.backendSeconds += secondsSince(backendStart);
   result.compileLog = outcome.log;
   if (outcome.ok) {
     result.status = Status::Fail;
-    result.message =
-        "compiled, but the listing as published is expected not to compile "
-        "(`expect = \"compile-error\"`)" +
-        (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
+    result.message = "compiled, but the listing as published is expected not to compile "
+                     "(`expect = \"compile-error\"`)" +
+                     (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
+    return;
+  }
+  const auto pinned = m.expectedErrors.find(precisionRulesForApi(driver_.api) == PrecisionRules::Vulkan ? "vk" : "gl");
+  if (pinned == m.expectedErrors.end()) {
+    result.status = Status::ExpectedCompileError;
+    result.message = "does not compile, as expected:\n" + outcome.log;
+    return;
+  }
+  const ExpectedDiagnostic& want = pinned->second;
+  const std::string file = want.stage == "vertex" ? m.vertexFile : m.fragmentFile;
+  const auto matches = [&](const CompileDiagnostic& d) {
+    return d.error && d.stage == want.stage && d.line == want.line &&
+           d.message.find(want.pattern) != std::string::npos;
+  };
+  // The first error is the one pinned: errors after it may be consequences of
+  // it, and an error before it means the text changed.
+  const auto found =
+      std::find_if(outcome.diagnostics.begin(), outcome.diagnostics.end(),
+                   [](const CompileDiagnostic& d) { return d.error; });
+  if (found == outcome.diagnostics.end() || !matches(*found)) {
+    result.status = Status::Fail;
+    result.message = fmt::format(
+        "does not compile, but not with the expected error: {} expects an error at {}:{}{} "
+        "(manifest line {}); the compiler said:\n{}",
+        m.path.filename().string(), file, want.line,
+        want.pattern.empty() ? "" : fmt::format(" containing \"{}\"", want.pattern),
+        want.manifestLine, outcome.log);
     return;
   }
   result.status = Status::ExpectedCompileError;
-  result.message = "does not compile, as expected:\n" + outcome.log;
+  result.message = fmt::format("does not compile, as expected: {}:{}: {}\n{}", file, found->line,
+                               found->message, outcome.log);
 }
 
 void CaseRunner::runFragmentVectors(const Case& c, const ResolvedBindings& bindings,

@@ -123,6 +123,19 @@ TEST(OracleIntervalArithmetic, DivisionAdmitsExactlyTheFloatsWithin2Point5Ulp) {
   }
 }
 
+// An exact quotient that is a power of two: the gap below 64 is half the gap
+// above, so 2.5 ULP reach two floats on either side and no further. A double
+// quotient widened by one double ULP either way used to reach the larger gap
+// above 64 and admit a fifth float below it.
+TEST(OracleIntervalArithmetic, ExactPowerOfTwoQuotientIsNotWidenedIntoTheGapAbove) {
+  const Interval q = Interval::point(0.012243230827152729f) / Interval::point(0.00019130048167426139f);
+  EXPECT_EQ(q.lo, 64.0 - 0x1p-17);
+  EXPECT_EQ(q.hi, 64.0 + 0x1p-17);
+  const Interval third = Interval::point(1.0f) / Interval::point(3.0f);
+  EXPECT_TRUE(contains(third, static_cast<float>(1.0 / 3.0)));
+  EXPECT_LT(third.lo, third.hi);
+}
+
 TEST(OracleIntervalArithmetic, DivisorThatMayBeZeroOrTinyIsUnconstrained) {
   const Interval byStraddle = Interval::point(1.0f) / Interval(-1.0, 1.0);
   EXPECT_TRUE(byStraddle.undefined);

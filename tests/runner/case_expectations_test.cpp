@@ -9,6 +9,7 @@
 #include <string>
 
 #include "backends/backend.h"
+#include "core/errors.h"
 #include "core/case.h"
 #include "runner/case_runner.h"
 
@@ -138,10 +139,23 @@ TEST_P(CaseExpectations, AProbeWhoseLineNeverRanFails) {
       << result.message;
 }
 
+// The error pinned at line 2 (where sampler2d is) for both compilers.
+const char* kExpectErrorAtLine2 = R"(expect = "compile-error"
+[compile_error.gl]
+stage = "fragment"
+line  = 2
+[compile_error.vk]
+stage = "fragment"
+line  = 2
+)";
+
+std::string withUndeclaredSampler(std::string fragment) {
+  fragment.replace(fragment.find("samplerCube"), 11, "sampler2d");
+  return fragment;
+}
+
 TEST_P(CaseExpectations, AnExpectedCompileErrorPassesWithTheDiagnostic) {
-  std::string broken = kFragment;
-  broken.replace(broken.find("samplerCube"), 11, "sampler2d");
-  const CaseResult result = run("expect = \"compile-error\"\n", captures(10), broken);
+  const CaseResult result = run(kExpectErrorAtLine2, captures(10), withUndeclaredSampler(kFragment));
   EXPECT_EQ(result.status, Status::ExpectedCompileError) << result.message;
   EXPECT_FALSE(isFailure(result.status));
   EXPECT_NE(result.message.find("does not compile, as expected"), std::string::npos);
@@ -152,9 +166,26 @@ TEST_P(CaseExpectations, AnExpectedCompileErrorPassesWithTheDiagnostic) {
 }
 
 TEST_P(CaseExpectations, AnExpectedCompileErrorThatCompilesFails) {
-  const CaseResult result = run("expect = \"compile-error\"\n", captures(10));
+  const CaseResult result = run(kExpectErrorAtLine2, captures(10));
   EXPECT_EQ(result.status, Status::Fail);
   EXPECT_NE(result.message.find("expected not to compile"), std::string::npos) << result.message;
+}
+
+// A listing that does not compile for another reason than the pinned one
+// (garbage at line 6, the sampler declared right) is a failure, not a pass.
+TEST_P(CaseExpectations, ADifferentCompileErrorFails) {
+  std::string garbled = kFragment;
+  garbled.insert(garbled.find("void main()"), "@@ garbage @@\n");
+  const CaseResult result = run(kExpectErrorAtLine2, captures(10), garbled);
+  EXPECT_EQ(result.status, Status::Fail) << result.message;
+  EXPECT_NE(result.message.find("not with the expected error"), std::string::npos)
+      << result.message;
+  EXPECT_NE(result.message.find("r.frag:2"), std::string::npos) << result.message;
+}
+
+TEST_P(CaseExpectations, AnExpectedCompileErrorWithoutItsDiagnosticIsRefused) {
+  EXPECT_THROW(run("expect = \"compile-error\"\n", captures(10), withUndeclaredSampler(kFragment)),
+               UsageError);
 }
 
 TEST_P(CaseExpectations, NotSupportedGivesTheReasonOnThatBackendOnly) {

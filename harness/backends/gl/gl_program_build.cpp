@@ -1,5 +1,7 @@
 #include "backends/gl/gl_program_build.h"
 
+#include "backends/gl/gl_diagnostics.h"
+
 #include <utility>
 
 #include "backends/gl/gl_error_check.h"
@@ -63,8 +65,9 @@ void appendLog(std::string& log, const std::string& heading, const std::string& 
   log += heading + ":\n" + text;
 }
 
-bool compileStage(GlShader& shader, const std::string& text, const std::string& heading,
-                  std::string& log) {
+bool compileStage(GlShader& shader, const std::string& text, const std::string& stage,
+                  const std::string& heading, CompileOutcome& outcome) {
+  std::string& log = outcome.log;
   const char* source = text.c_str();
   const GLint length = static_cast<GLint>(text.size());
   glShaderSource(shader.id(), 1, &source, &length);
@@ -74,6 +77,7 @@ bool compileStage(GlShader& shader, const std::string& text, const std::string& 
   std::string stageLog = shaderLog(shader.id());
   if (status != GL_TRUE && stageLog.empty()) stageLog = "compilation failed (the driver gave no log)";
   appendLog(log, heading, stageLog);
+  for (CompileDiagnostic& d : gl::parseMesaLog(stage, stageLog)) outcome.diagnostics.push_back(std::move(d));
   return status == GL_TRUE;
 }
 
@@ -85,15 +89,16 @@ BuiltProgram buildGlProgram(const ProgramSource& source,
   std::string& log = built.outcome.log;
 
   GlShader vertex(GL_VERTEX_SHADER);
-  bool compiled = compileStage(vertex, source.vertex, labelled("vertex shader", source.vertexPath), log);
+  bool compiled = compileStage(vertex, source.vertex, "vertex",
+                               labelled("vertex shader", source.vertexPath), built.outcome);
 
   const bool hasFragment = !source.fragment.empty();
   GlShader fragment(GL_FRAGMENT_SHADER);
   // Both stages are compiled even when the first fails, so one run reports
   // every error.
   if (hasFragment)
-    compiled &= compileStage(fragment, source.fragment,
-                             labelled("fragment shader", source.fragmentPath), log);
+    compiled &= compileStage(fragment, source.fragment, "fragment",
+                             labelled("fragment shader", source.fragmentPath), built.outcome);
   throwOnGlError("glCompileShader");
   if (!compiled) return built;
 

@@ -1,5 +1,7 @@
 #include "backends/vk/glsl_to_spirv.h"
 
+#include "backends/vk/glslang_diagnostics.h"
+
 #include <glslang/Include/Types.h>
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -44,7 +46,8 @@ void appendLog(std::string& log, const std::string& text, const std::string& fil
 }
 
 std::unique_ptr<glslang::TShader> parseStage(EShLanguage stage, const std::string& source,
-                                             const std::string& file, std::string& log) {
+                                             const std::string& file, VulkanProgram& result) {
+  std::string& log = result.log;
   auto shader = std::make_unique<glslang::TShader>(stage);
   const char* text = source.c_str();
   const int length = static_cast<int>(source.size());
@@ -60,6 +63,9 @@ std::unique_ptr<glslang::TShader> parseStage(EShLanguage stage, const std::strin
   shader->setAutoMapBindings(true);
   const bool ok = shader->parse(GetDefaultResources(), 100, false, kMessages);
   appendLog(log, shader->getInfoLog(), file);
+  for (CompileDiagnostic& d :
+       parseGlslangLog(stage == EShLangVertex ? "vertex" : "fragment", shader->getInfoLog()))
+    result.diagnostics.push_back(std::move(d));
   return ok ? std::move(shader) : nullptr;
 }
 
@@ -187,10 +193,10 @@ VulkanProgram compileForVulkan(const ProgramSource& source) {
     if (hasFragment) fragmentText = adaptLegacyForVulkan(source.fragment, LegacyStage::Fragment);
   }
 
-  auto vertex = parseStage(EShLangVertex, vertexText.text, vertexFile, result.log);
+  auto vertex = parseStage(EShLangVertex, vertexText.text, vertexFile, result);
   std::unique_ptr<glslang::TShader> fragment;
   if (hasFragment)
-    fragment = parseStage(EShLangFragment, fragmentText.text, fragmentFile, result.log);
+    fragment = parseStage(EShLangFragment, fragmentText.text, fragmentFile, result);
   if (!vertex || (hasFragment && !fragment)) return result;
 
   // Declared after the shaders so that it is destroyed first: it points at them.

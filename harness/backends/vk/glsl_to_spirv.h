@@ -29,6 +29,7 @@ struct VertexInput {
 struct VulkanProgram {
   bool ok = false;
   std::string log;  // every line names the file it is about
+  std::vector<CompileDiagnostic> diagnostics;
   std::vector<std::uint32_t> vertexSpirv;
   std::vector<std::uint32_t> fragmentSpirv;        // empty when the program has no fragment stage
   std::optional<UniformBlockLayout> uniformBlock;  // nullopt when no loose uniform is live

@@ -87,7 +87,7 @@ class VkBackend final : public Backend {
         checkShaderModule(compiled.vertexSpirv);
         if (!compiled.fragmentSpirv.empty()) checkShaderModule(compiled.fragmentSpirv);
       }
-      return CompileOutcome{compiled.ok, compiled.log};
+      return CompileOutcome{compiled.ok, compiled.log, compiled.diagnostics};
     });
   }
 
@@ -135,7 +135,7 @@ class VkBackend final : public Backend {
                                 job.program, job.varyings);
         });
     CaptureOutcome outcome;
-    outcome.compile = {prepared.program.ok, prepared.program.log};
+    outcome.compile = {prepared.program.ok, prepared.program.log, prepared.program.diagnostics};
     if (!prepared.program.ok) return outcome;
     if (job.vertexCount > kMaxVertices) {
       throw UsageError("a capture of " + std::to_string(job.vertexCount) +
@@ -204,7 +204,7 @@ class VkBackend final : public Backend {
                            withProbeLocations(compiled(source), source), source);
     });
     RenderOutcome outcome;
-    outcome.compile = {prepared.program.ok, prepared.program.log};
+    outcome.compile = {prepared.program.ok, prepared.program.log, prepared.program.diagnostics};
     if (!prepared.program.ok) return outcome;
 
     RenderDraw draw;
