@@ -6,6 +6,7 @@
 #include "cli/commands.h"
 #include "core/case.h"
 #include "core/status.h"
+#include "runner/case_validation.h"
 
 namespace snell::cli {
 
@@ -16,11 +17,14 @@ Command addListCommand(CLI::App& app) {
     std::string filter;
   };
   auto options = std::make_shared<Options>();
-  list->add_option("--shaders", options->shaders, "Folder of listings")->check(CLI::ExistingDirectory);
+  list->add_option("--shaders", options->shaders, "Folder of listings")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
   list->add_option("--filter", options->filter, "Only cases whose id matches this glob");
   return [options] {
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     const std::vector<Case> cases = expandCases(manifests, options->filter);
+    validateCases(cases, options->shaders);
     std::size_t width = 4;
     for (const Case& c : cases) width = std::max(width, c.id.size());
     fmt::print("{:<{}}  {:<8}  {:<20}  {:<8}  {:<13}  {:<26}  {}\n", "case", width, "backends",

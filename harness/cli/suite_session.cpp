@@ -9,68 +9,16 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
-#include "core/manifest_check.h"
 #include "core/scene_file.h"
-#include "oracle/reference/reference_image.h"
-#include "oracle/vertex_oracle.h"
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
+#include "runner/case_validation.h"
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/supervisor.h"
 
 namespace snell::cli {
-namespace {
-
 namespace fs = std::filesystem;
-
-[[noreturn]] void atLine(const Manifest& m, int line, const std::string& what) {
-  throw UsageError(fmt::format("{}:{}: {}", m.path.string(), line, what));
-}
-
-// Everything a case needs is read before any driver is loaded, so a broken
-// manifest or a missing stage file stops the run with exit 2 up front.
-void validateCases(const std::vector<Case>& cases, const std::string& shaders) {
-  SceneCache scenes(sceneSearchPath(shaders));
-  for (const Case& c : cases) {
-    const Manifest& m = *c.manifest;
-    const ProgramSource program = loadProgram(m);
-    const Scene* scene = nullptr;
-    try {
-      scene = &scenes.get(c.spec.scene);
-    } catch (const UsageError& error) {
-      atLine(m, c.spec.line, error.what());
-    }
-    const ResolvedBindings bindings = resolveBindings(m, *scene);
-    checkManifestAgainstProgram(m, program, bindings);
-    try {
-      makeVertexOracle(m.oracle);
-    } catch (const UsageError& error) {
-      atLine(m, m.oracleLine, error.what());
-    }
-    if (c.spec.has("vectors")) {
-      try {
-        checkFragmentCaptures(m, program, *scene);
-      } catch (const UsageError& error) {
-        // Errors about the program or the oracle carry their own place.
-        const std::string what = error.what();
-        if (what.rfind(m.path.string() + ":", 0) == 0 || what.rfind(program.fragmentPath + ":", 0) == 0)
-          throw;
-        atLine(m, c.spec.line, what);
-      }
-    }
-    if (c.spec.has("image")) {
-      if (!scene->draws())
-        atLine(m, c.spec.line, fmt::format("scene `{}` draws nothing; its cases check "
-                                           "[\"vectors\"] only", scene->name));
-      if (!hasFragmentOracle(m.oracle))
-        atLine(m, m.oracleLine, fmt::format("oracle `{}` has no fragment part, so the "
-                                            "\"image\" check has no reference", m.oracle));
-    }
-  }
-}
-
-}  // namespace
 
 void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   options.shaders = defaultShadersDir();
@@ -78,8 +26,10 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   sub.add_option("--backend", options.backend, "gl, vk or all")
       ->check(CLI::IsMember({"gl", "vk", "all"}));
   sub.add_option("--filter", options.filter, "Only cases whose id matches this glob");
-  sub.add_option("--shaders", options.shaders, "Folder of listings")->check(CLI::ExistingDirectory);
-  sub.add_option("--golden", options.golden, "Folder of blessed goldens");
+  sub.add_option("--shaders", options.shaders, "Folder of listings")
+      ->check(CLI::ExistingDirectory)
+      ->capture_default_str();
+  sub.add_option("--golden", options.golden, "Folder of blessed goldens")->capture_default_str();
   sub.add_option("--json", options.json, "Write results as JSON Lines, one object per case");
   sub.add_option("--out", options.out,
                   "Folder for rendered images, heat maps and masks (default: snell-out)");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "compare/slack.h"
@@ -36,6 +37,24 @@ bool fits(const Way& way, int components, const float* observed) {
   for (int c = 0; c < components; ++c)
     if (!way.undefined[c] && !withinSpec(observed[c], way.lo[c], way.hi[c])) return false;
   return true;
+}
+
+bool sameFailure(const ComponentFailure& a, const ComponentFailure& b) {
+  return a.component == b.component && a.observed == b.observed && a.lo == b.lo && a.hi == b.hi &&
+         a.reference == b.reference;
+}
+
+void keepIfAmongWorst(std::vector<ComponentFailure>& kept, const ComponentFailure& failure) {
+  for (const ComponentFailure& k : kept)
+    if (sameFailure(k, failure)) return;
+  if (kept.size() < VaryingCheck::kFailuresKept) {
+    kept.push_back(failure);
+    return;
+  }
+  const auto mildest = std::min_element(
+      kept.begin(), kept.end(),
+      [](const ComponentFailure& a, const ComponentFailure& b) { return a.slack < b.slack; });
+  if (failure.slack > mildest->slack) *mildest = failure;
 }
 
 }  // namespace
@@ -94,11 +113,18 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
       }
       if (fitsAWay || withinSpec(values[c], best->lo[c], best->hi[c])) continue;
       ++check.failed;
-      if (check.firstFailures.size() < VaryingCheck::kFailuresKept)
-        check.firstFailures.push_back({sample, c, values[c], best->reference[c], best->lo[c],
-                                       best->hi[c], s, static_cast<int>(ways.size())});
+      keepIfAmongWorst(check.worstFailures, {sample, c, values[c], best->reference[c],
+                                             best->lo[c], best->hi[c], s,
+                                             static_cast<int>(ways.size())});
     }
   }
+  // Worst first; equal slack in sample order, so the order is reproducible.
+  std::sort(check.worstFailures.begin(), check.worstFailures.end(),
+            [](const ComponentFailure& a, const ComponentFailure& b) {
+              return a.slack != b.slack ? a.slack > b.slack
+                                        : std::pair{a.vertex, a.component} <
+                                              std::pair{b.vertex, b.component};
+            });
   return check;
 }
 

@@ -28,7 +28,10 @@ struct VaryingCheck {
   std::size_t withAlternatives = 0;  // samples held against two or more ways
   double worstSlack = 0;             // over the checked components
   std::size_t worstVertex = 0;
-  std::vector<ComponentFailure> firstFailures;  // at most kFailuresKept, in vertex order
+  // The failures with the largest slack, worst first, at most kFailuresKept;
+  // a failure identical to one kept (same component, value and interval) is
+  // not kept twice.
+  std::vector<ComponentFailure> worstFailures;
   static constexpr std::size_t kFailuresKept = 8;
 };
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "core/errors.h"
+#include "core/glsl_declarations.h"
 
 namespace snell {
 
@@ -33,12 +34,48 @@ namespace {
                                scene.name, fmt::format("{}", fmt::join(known, ", "))));
 }
 
+// GL's initial value of a uniform the manifest binds to "default": zero, of
+// the type the listing declares (a sampler is left to the backend's unit 0).
+void bindApiDefaultUniform(const Manifest& manifest, const Binding& binding, UniformMap& uniforms) {
+  const ProgramSource program = loadProgram(manifest);
+  for (const std::string* source : {&program.vertex, &program.fragment})
+    for (const GlslDeclaration& d : readGlobalDeclarations(*source)) {
+      if (d.qualifier != "uniform" || d.name != binding.name) continue;
+      for (ValueType type : {ValueType::Float, ValueType::Vec2, ValueType::Vec3, ValueType::Vec4,
+                             ValueType::Mat3, ValueType::Mat4})
+        if (d.type == glslTypeName(type))
+          uniforms[binding.name] = Value{type, std::vector<float>(componentCount(type), 0.0f)};
+      return;
+    }
+}
+
+// GL's initial value of a generic vertex input, (0, 0, 0, 1), cut to the
+// components the listing declares, at every vertex.
+AttributeStream apiDefaultInput(const Manifest& manifest, const std::string& name,
+                                std::size_t vertexCount) {
+  int components = 4;
+  for (const GlslDeclaration& d : readGlobalDeclarations(loadProgram(manifest).vertex))
+    if ((d.qualifier == "in" || d.qualifier == "attribute") && d.name == name)
+      components = d.type == "float" ? 1 : d.type.size() == 4 ? d.type[3] - '0' : 4;
+  components = std::clamp(components, 1, 4);
+  const float initial[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  AttributeStream stream{name, components, {}};
+  stream.data.reserve(vertexCount * static_cast<std::size_t>(components));
+  for (std::size_t v = 0; v < vertexCount; ++v)
+    stream.data.insert(stream.data.end(), initial, initial + components);
+  return stream;
+}
+
 }  // namespace
 
 ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
   ResolvedBindings out;
   out.vertexCount = scene.vertexCount;
   for (const Binding& binding : manifest.uniforms) {
+    if (binding.apiDefault) {
+      bindApiDefaultUniform(manifest, binding, out.uniforms);
+      continue;
+    }
     if (const Value* literal = std::get_if<Value>(&binding.source)) {
       out.uniforms[binding.name] = *literal;
       continue;
@@ -51,6 +88,10 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
     // Samplers are bound by the pixel path; the vertex stage does not read them.
   }
   for (const Binding& binding : manifest.inputs) {
+    if (binding.apiDefault) {
+      out.attributes[binding.name] = apiDefaultInput(manifest, binding.name, scene.vertexCount);
+      continue;
+    }
     if (std::holds_alternative<Value>(binding.source))
       throw UsageError(fmt::format("{}:{}: input `{}` must name a per-vertex scene semantic "
                                    "(scene.position, scene.normal), not a literal",

@@ -122,9 +122,15 @@ class ManifestReader {
       Binding binding{std::string(name.str()), std::string(), lineOf(value)};
       if (value.is_string()) {
         const std::string text(*value.value<std::string>());
+        if (text == "default") {
+          binding.apiDefault = true;
+          out.push_back(std::move(binding));
+          continue;
+        }
         if (text.rfind("scene.", 0) != 0)
           fail(binding.line, fmt::format("`{}` = \"{}\": a binding string names a scene semantic "
-                                         "and starts with \"scene.\"", binding.name, text));
+                                         "and starts with \"scene.\" (or is \"default\" for the API's "
+                                         "initial value)", binding.name, text));
         binding.source = text.substr(6);
       } else {
         binding.source = literal(value, binding.name);

@@ -23,6 +23,9 @@ struct Binding {
   std::string name;                          // the GLSL name
   std::variant<std::string, Value> source;   // semantic (without "scene.") or literal
   int line = 0;                              // where it is written, for messages
+  // `"default"`: the author wants the API's initial value (0, or (0,0,0,1)
+  // for an input) and says so; snell sets nothing.
+  bool apiDefault = false;
 };
 
 // OpenImageIO idiff's rules for one image comparison (see compare/).

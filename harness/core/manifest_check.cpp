@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <optional>
 
 #include "core/errors.h"
@@ -70,6 +72,55 @@ void checkLegacyBinding(const Manifest& m, const Binding& b, bool uniform,
                     manifest, b.line, b.name, glslTypeName(builtin->type), components));
 }
 
+
+bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// Occurrences of `name` as a whole identifier in `code` (comments blanked).
+int identifierUses(const std::string& code, const std::string& name) {
+  int uses = 0;
+  for (std::size_t at = code.find(name); at != std::string::npos; at = code.find(name, at + 1)) {
+    const bool startsWord = at == 0 || !identifierChar(code[at - 1]);
+    const std::size_t end = at + name.size();
+    const bool endsWord = end >= code.size() || !identifierChar(code[end]);
+    uses += startsWord && endsWord;
+  }
+  return uses;
+}
+
+bool bound(const std::vector<Binding>& bindings, const std::string& name) {
+  return std::any_of(bindings.begin(), bindings.end(),
+                     [&](const Binding& b) { return b.name == name; });
+}
+
+// A uniform or vertex input the listing declares and reads but the manifest
+// leaves unbound would be read as the API's initial value (0) and the case
+// might pass on nothing: the author binds it, or writes "default" to say the
+// initial value is meant.
+void checkEveryReadDeclarationIsBound(const Manifest& m, const ProgramSource& program) {
+  struct Stage {
+    const std::string& source;
+    const std::string& file;
+    bool vertex;
+  };
+  for (const Stage& stage : {Stage{program.vertex, program.vertexPath, true},
+                             Stage{program.fragment, program.fragmentPath, false}}) {
+    if (stage.source.empty()) continue;
+    const std::string code = withoutComments(stage.source);
+    for (const GlslDeclaration& d : readGlobalDeclarations(stage.source)) {
+      const bool uniform = d.qualifier == "uniform";
+      const bool input = stage.vertex && (d.qualifier == "in" || d.qualifier == "attribute");
+      if (!uniform && !input) continue;
+      if (bound(uniform ? m.uniforms : m.inputs, d.name)) continue;
+      if (identifierUses(code, d.name) < 2) continue;  // declared, never read
+      throw UsageError(fmt::format(
+          "{}:{}: {} `{}` is declared and read, but {} does not bind it: add it to [{}] as "
+          "\"scene.<semantic>\", a literal, or \"default\" for the API's initial value",
+          stage.file, d.line, uniform ? "uniform" : "input", d.name, m.path.string(),
+          uniform ? "uniforms" : "inputs"));
+    }
+  }
+}
+
 }  // namespace
 
 void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program,
@@ -80,6 +131,10 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
   for (const GlslDeclaration& d : readGlobalDeclarations(program.fragment)) all.push_back(d);
 
   for (const Binding& b : m.uniforms) {
+    if (legacyName(b.name) && b.apiDefault)
+      throw UsageError(fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
+                                   "listing's own uniforms and inputs; bind a scene semantic",
+                                   manifest, b.line, b.name));
     if (legacyName(b.name)) {
       checkLegacyBinding(m, b, true, bindings);
       continue;
@@ -103,6 +158,10 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
                                    glslTypeName(bound->second.type)));
   }
   for (const Binding& b : m.inputs) {
+    if (legacyName(b.name) && b.apiDefault)
+      throw UsageError(fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
+                                   "listing's own uniforms and inputs; bind a scene semantic",
+                                   manifest, b.line, b.name));
     if (legacyName(b.name)) {
       checkLegacyBinding(m, b, false, bindings);
       continue;
@@ -112,6 +171,7 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
       throw UsageError(fmt::format("{}:{}: input `{}` is not declared in {}; check the spelling "
                                    "against the listing",
                                    manifest, b.line, b.name, m.vertexFile));
+    if (b.apiDefault) continue;
     const int components = bindings.attributes.at(b.name).components;
     const bool fits = (declared->type == "float" && components == 1) ||
                       (declared->type.size() == 4 && declared->type.rfind("vec", 0) == 0 &&
@@ -121,6 +181,7 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
                                    "components",
                                    manifest, b.line, b.name, declared->type, components));
   }
+  checkEveryReadDeclarationIsBound(m, program);
   for (const std::string& name : m.captureVertex)
     if (!find(vertex, {"out", "varying"}, name))
       throw UsageError(fmt::format("{}:{}: capture.vertex names `{}`, which {} does not declare "

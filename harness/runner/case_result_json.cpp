@@ -83,7 +83,7 @@ nlohmann::json toJson(const CaseResult& r) {
   nlohmann::json varyings = nlohmann::json::array();
   for (const VaryingCheck& v : r.varyings) {
     nlohmann::json failures = nlohmann::json::array();
-    for (const ComponentFailure& f : v.firstFailures)
+    for (const ComponentFailure& f : v.worstFailures)
       failures.push_back({{"vertex", f.vertex}, {"component", f.component},
                           {"observed", number(f.observed)}, {"reference", f.reference},
                           {"lo", f.lo}, {"hi", f.hi}, {"slack", number(f.slack)}});
@@ -146,7 +146,7 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
     check.worstSlack = numberOr(v.at("worst_slack"), kInf);
     check.worstVertex = count<std::size_t>(v.at("worst_vertex"));
     for (const nlohmann::json& f : v.at("first_failures"))
-      check.firstFailures.push_back(
+      check.worstFailures.push_back(
           {count<std::size_t>(f.at("vertex")), count<int>(f.at("component")),
            static_cast<float>(numberOr(f.at("observed"), std::nan(""))), f.at("reference").get<double>(),
            f.at("lo").get<double>(), f.at("hi").get<double>(), numberOr(f.at("slack"), kInf)});

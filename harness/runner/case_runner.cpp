@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 
 #include "core/errors.h"
 #include "core/scene_file.h"
 #include "runner/builtin_eval.h"
+#include "runner/failure_report.h"
 #include "runner/fragment_vector_check.h"
 
 namespace snell {
@@ -16,20 +18,6 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-std::string describeFailures(const std::vector<VaryingCheck>& checks) {
-  std::string text;
-  for (const VaryingCheck& v : checks) {
-    if (!v.failed) continue;
-    text += fmt::format("{}: {} of {} components outside the spec interval", v.name, v.failed,
-                        v.checked);
-    for (const ComponentFailure& f : v.firstFailures)
-      text += fmt::format("\n  vertex {} [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]",
-                          f.vertex, f.component, f.observed, f.reference, f.lo, f.hi);
-    text += "\n";
-  }
-  return text;
 }
 
 }  // namespace
@@ -52,10 +40,9 @@ const std::vector<OracleVarying>& OracleCache::get(const Case& c, const Resolved
   const std::vector<std::string> outputs = oracle->outputs();
   for (const std::string& name : m.captureVertex)
     if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
-      throw UsageError(
-          fmt::format("{}: capture.vertex names `{}`, which oracle `{}` does not "
-                      "compute; it computes {}",
-                      m.path.string(), name, m.oracle, fmt::join(outputs, ", ")));
+      throw std::logic_error(fmt::format("{}: `{}` is not computed by oracle `{}`: "
+                                         "validateCase lets no such manifest through",
+                                         m.path.string(), name, m.oracle));
   std::vector<OracleVarying> all = oracle->evaluate(
       {bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount, rules});
   std::vector<OracleVarying> captured;
@@ -100,6 +87,11 @@ CaseResult CaseRunner::run(const Case& c) {
     result.status = Status::Fail;
     result.message += fmt::format("backend error: {}\n", error.what());
   }
+  if (result.status != Status::CompileError && result.status != Status::ExpectedCompileError)
+    if (const std::string reasons = nothingCheckedReasons(m, result); !reasons.empty()) {
+      result.status = worstOf(result.status, Status::Fail);
+      result.message = reasons + result.message;
+    }
   result.seconds = secondsSince(start);
   return result;
 }
@@ -122,7 +114,7 @@ void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, Cas
   for (std::size_t k = 0; k < expected.size(); ++k)
     result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
   if (result.componentsFailed()) result.status = worstOf(result.status, Status::Fail);
-  result.message += describeFailures(result.varyings);
+  result.message += describeVertexFailures(m, job.program, bindings, result.varyings);
 }
 
 // A listing kept as published although it does not compile: it passes as

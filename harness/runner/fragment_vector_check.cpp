@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "oracle/vertex_oracle.h"
 #include "runner/builtin_eval.h"
+#include "runner/failure_report.h"
 #include "runner/image_check.h"
 
 namespace snell {
@@ -60,14 +61,21 @@ std::vector<float> valuesAt(const Image& probe, const std::vector<Pixel>& pixels
   return data;
 }
 
-std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels) {
-  std::string text = fmt::format("{}: {} of {} components outside the spec interval\n", v.name,
-                                 v.failed, v.checked);
-  for (const ComponentFailure& f : v.firstFailures) {
+std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels,
+                     const AttributeMap& inputs, const UniformMap& uniforms,
+                     const FragmentCapture& capture, const std::string& fragmentPath) {
+  std::string text =
+      fmt::format("{}: {} of {} components outside the spec interval (read after {}:{}); worst "
+                  "first:\n",
+                  v.name, v.failed, v.checked, fragmentPath, capture.line);
+  for (const ComponentFailure& f : v.worstFailures) {
     const Pixel& p = pixels.at(f.vertex);
-    text +=
-        fmt::format("  pixel ({}, {}) [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]\n",
-                    p.x, p.y, f.component, f.observed, f.reference, f.lo, f.hi);
+    text += fmt::format(
+        "  pixel ({}, {}) [{}]: got {:.9g}, exact {:.9g}, allowed [{:.9g}, {:.9g}]{}\n"
+        "    inputs: {}\n",
+        p.x, p.y, f.component, f.observed, f.reference, f.lo, f.hi,
+        f.ways > 1 ? fmt::format(" (nearest of {} ways)", f.ways) : "",
+        sampleInputs(inputs, uniforms, f.vertex));
   }
   return text;
 }
@@ -159,9 +167,15 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     const auto found = std::find_if(expected.begin(), expected.end(),
                                     [&](const OracleVarying& v) { return v.name == values.name; });
     VaryingCheck varying = checkVarying(*found, values);
-    if (varying.failed) check.failures += describe(varying, pixels);
+    const auto capture =
+        std::find_if(m.captureFragment.begin(), m.captureFragment.end(),
+                     [&](const FragmentCapture& c) { return c.name == values.name; });
+    if (varying.failed)
+      check.failures += describe(varying, pixels, inputs, bindings.uniforms, *capture,
+                                 job.program.fragmentPath);
     check.varyings.push_back(std::move(varying));
   }
+  if (!check.failures.empty()) check.failures = constantsDisagreement(m, job.program) + check.failures;
   return check;
 }
 

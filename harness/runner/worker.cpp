@@ -12,6 +12,7 @@
 #include "core/scene_file.h"
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
+#include "runner/case_validation.h"
 
 namespace snell {
 
@@ -29,6 +30,7 @@ int runWorker(const WorkerOptions& options) {
   for (std::string id; std::getline(std::cin, id);) {
     auto it = byId.find(id);
     if (it == byId.end()) throw UsageError(fmt::format("worker: no case `{}`", id));
+    validateCase(*it->second, scenes);  // the same step the supervisor ran
     if (!backend) {
       backend = makeBackend(options.backend, BackendOptions{.validation = options.validation});
       runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,

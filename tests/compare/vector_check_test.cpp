@@ -50,9 +50,52 @@ TEST(VectorCheck, FailsJustOutsideTheInterval) {
   CapturedVarying got{"R", 3, {0.5f, -0.25f, std::nextafter(1.0f, 2.0f)}};
   const VaryingCheck check = checkVarying(e, got);
   EXPECT_EQ(check.failed, 1u);
-  ASSERT_EQ(check.firstFailures.size(), 1u);
-  EXPECT_EQ(check.firstFailures[0].component, 2);
+  ASSERT_EQ(check.worstFailures.size(), 1u);
+  EXPECT_EQ(check.worstFailures[0].component, 2);
   EXPECT_GT(check.worstSlack, 1.0);
+}
+
+// Twenty failing samples: the eight kept are the worst by slack, worst first,
+// and a failure repeated sample after sample is kept once.
+TEST(VectorCheck, KeepsTheWorstFailuresOnceEach) {
+  OracleVarying e;
+  e.name = "F";
+  e.components = 1;
+  CapturedVarying got{"F", 1, {}};
+  for (int sample = 0; sample < 20; ++sample) {
+    e.reference.push_back(0.0);
+    e.lo.push_back(-1.0);
+    e.hi.push_back(1.0);
+    e.strict.push_back(0.0f);
+    e.undefined.push_back(0);
+    // Samples 0-9 all read 1.5 (the same failure); 10-19 read 2, 3, ... 11.
+    got.data.push_back(sample < 10 ? 1.5f : static_cast<float>(sample - 8));
+  }
+  const VaryingCheck check = checkVarying(e, got);
+  EXPECT_EQ(check.failed, 20u);
+  ASSERT_EQ(check.worstFailures.size(), VaryingCheck::kFailuresKept);
+  for (std::size_t k = 0; k < check.worstFailures.size(); ++k)
+    EXPECT_EQ(check.worstFailures[k].observed, static_cast<float>(11 - k)) << k;
+  EXPECT_EQ(check.worstFailures[0].vertex, 19u);
+}
+
+TEST(VectorCheck, ARepeatedFailureIsKeptOnce) {
+  OracleVarying e;
+  e.name = "F";
+  e.components = 1;
+  CapturedVarying got{"F", 1, {}};
+  for (int sample = 0; sample < 5; ++sample) {
+    e.reference.push_back(0.0);
+    e.lo.push_back(-1.0);
+    e.hi.push_back(1.0);
+    e.strict.push_back(0.0f);
+    e.undefined.push_back(0);
+    got.data.push_back(sample == 3 ? 4.0f : 1.5f);
+  }
+  const VaryingCheck check = checkVarying(e, got);
+  ASSERT_EQ(check.worstFailures.size(), 2u);
+  EXPECT_EQ(check.worstFailures[0].vertex, 3u);
+  EXPECT_EQ(check.worstFailures[1].vertex, 0u);  // the first of the four alike
 }
 
 TEST(VectorCheck, FailsOnNan) {

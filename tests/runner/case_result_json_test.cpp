@@ -26,7 +26,7 @@ TEST(CaseResultJson, RoundTripsEveryField) {
   v.failed = 1;
   v.worstSlack = std::numeric_limits<double>::infinity();
   v.worstVertex = 2;
-  v.firstFailures.push_back({2, 1, 0.5f, 0.25, 0.2, 0.3, std::numeric_limits<double>::infinity()});
+  v.worstFailures.push_back({2, 1, 0.5f, 0.25, 0.2, 0.3, std::numeric_limits<double>::infinity()});
   r.varyings.push_back(v);
   r.compileLog = "log";
   r.seconds = 1.5;
