@@ -12,7 +12,7 @@
 
 #include "core/manifest.h"
 #include "core/image.h"
-#include "oracle/reference/reference_image.h"
+#include "core/pixel_mask.h"
 
 namespace snell {
 

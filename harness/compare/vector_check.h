@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/values.h"
-#include "oracle/vertex_oracle.h"
+#include "core/expected_values.h"
 
 namespace snell {
 

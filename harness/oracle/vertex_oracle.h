@@ -9,40 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "core/expected_values.h"
 #include "core/values.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
-
-// One way a sample's undecidable branches may go (oracle/branch_paths.h):
-// a value per component along that path.
-struct OracleAlternative {
-  std::vector<double> reference;  // the listing in double, following the path
-  std::vector<double> lo, hi;     // the fp32 results the spec allows on it
-  std::vector<std::uint8_t> undefined;
-};
-
-struct SampleAlternatives {
-  std::size_t sample = 0;
-  std::vector<OracleAlternative> ways;  // two or more, distinct
-};
-
-struct OracleVarying {
-  std::string name;
-  int components = 1;
-  // All four vectors hold vertexCount * components entries, vertex-major.
-  std::vector<double> reference;  // the listing evaluated in double
-  std::vector<float> strict;      // the listing evaluated in float
-  std::vector<double> lo, hi;     // the fp32 results the spec allows (the hull of the ways)
-  // 1 where the spec leaves the component undefined (pow of a negative
-  // base, NaN, ...): such samples are reported as non-portable, not gated.
-  std::vector<std::uint8_t> undefined;
-  // Samples where a branch may go either way, in ascending sample order: a
-  // read-back vector passes only when every component fits one way.
-  std::vector<SampleAlternatives> alternatives;
-  // Samples with more than kMaxBranchPaths ways, checked against the hull.
-  std::size_t mergedToHull = 0;
-};
 
 struct OracleInput {
   const UniformMap& uniforms;      // by the listing's GLSL names

@@ -6,19 +6,6 @@
 
 namespace snell {
 
-const char* pixelMaskName(PixelMask mask) {
-  switch (mask) {
-    case PixelMask::None:
-      return "none";
-    case PixelMask::Silhouette:
-      return "silhouette";
-    case PixelMask::FaceEdge:
-      return "face-edge";
-    case PixelMask::Undefined:
-      return "undefined";
-  }
-  return "?";
-}
 
 std::size_t ReferenceImage::count(PixelMask m) const {
   return static_cast<std::size_t>(std::count(mask.begin(), mask.end(), m));

@@ -12,19 +12,10 @@
 
 #include "core/cube_map.h"
 #include "core/image.h"
+#include "core/pixel_mask.h"
 #include "core/values.h"
 
 namespace snell {
-
-// Why a pixel is left out of the gate. Masked pixels are counted and
-// reported, never failed.
-enum class PixelMask : std::uint8_t {
-  None = 0,        // compared
-  Silhouette = 1,  // partial coverage: fill rules and sub-pixel precision may differ
-  FaceEdge = 2,    // a lookup direction within the precision bound of a cube face edge
-  Undefined = 3,   // the listing is undefined here (zero refract vector fed to a lookup, NaN)
-};
-const char* pixelMaskName(PixelMask mask);
 
 struct ReferenceImage {
   Image color;                      // the reference colour, linear float
