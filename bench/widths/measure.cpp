@@ -68,8 +68,19 @@ void RowAccumulator::add(const SampleRecord& record) {
     }
   }
   for (std::size_t k = 0; k < record.deqp.size(); ++k) {
-    snellWidths_.push_back(inUlps(snell.hi[k] - snell.lo[k], record.reference[k]));
-    deqpWidths_.push_back(inUlps(record.deqp[k].hi - record.deqp[k].lo, record.reference[k]));
+    const double snellWidth = inUlps(snell.hi[k] - snell.lo[k], record.reference[k]);
+    const double deqpWidth = inUlps(record.deqp[k].hi - record.deqp[k].lo, record.reference[k]);
+    snellWidths_.push_back(snellWidth);
+    deqpWidths_.push_back(deqpWidth);
+    const double ratio = deqpWidth > 0 ? snellWidth / deqpWidth : 0.0;
+    if (ratio > stats_.widestRatio) {
+      stats_.widestRatio = ratio;
+      stats_.widest = fmt::format(
+          "{} component {}: exact {:.9g}, snell [{:.9g}, {:.9g}] ({:.3g} ULP), dEQP-style "
+          "[{:.9g}, {:.9g}] ({:.3g} ULP)",
+          record.input, k, record.reference[k], snell.lo[k], snell.hi[k], snellWidth,
+          record.deqp[k].lo, record.deqp[k].hi, deqpWidth);
+    }
   }
 }
 

@@ -35,6 +35,10 @@ struct RowStats {
   std::size_t conforming = 0;  // conforming vectors held against both
   std::size_t snellEscapes = 0, deqpEscapes = 0;
   std::string snellEscape, deqpEscape;  // the first escape of each, reproducible
+  // The component where snell's width exceeds the dEQP-style one the most
+  // (ratio of the widths), reproducible.
+  double widestRatio = 0;
+  std::string widest;
 };
 
 class RowAccumulator {

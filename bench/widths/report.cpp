@@ -26,11 +26,16 @@ void printTable(std::ostream& out, const WidthReport& report) {
   for (const RowStats& r : report.rows)
     fmt::print(
         out,
-        "{:<58} {:<6} {:>5} {:>5} | {:>9.3g} {:>9.3g} | {:>9.3g} {:>9.3g} | {:>6.2f} {:>6.2f} | "
+        "{:<58} {:<6} {:>5} {:>5} | {:>9.3g} {:>9.3g} | {:>9.3g} {:>9.3g} | {:>6.3g} {:>6.3g} | "
         "{:>7} {:>7}\n",
         r.row, r.rules, r.samples, r.split, r.snellMedian, r.snellMax, r.deqpMedian, r.deqpMax,
         ratio(r.snellMedian, r.deqpMedian), ratio(r.snellMax, r.deqpMax), r.snellEscapes,
         r.deqpEscapes);
+  fmt::print(
+      out, "\nWhere snell is widest beside the dEQP-style interval (rows with a ratio over 2):\n");
+  for (const RowStats& r : report.rows)
+    if (r.widestRatio > 2)
+      fmt::print(out, "{} ({}): x{:.3g} at {}\n", r.row, r.rules, r.widestRatio, r.widest);
   for (const RowStats& r : report.rows) {
     if (r.snellEscapes)
       fmt::print(out, "snell escape, {} ({}): {}\n", r.row, r.rules, r.snellEscape);
@@ -56,7 +61,9 @@ void writeJson(const std::string& path, const WidthReport& report) {
                     {"snell_escapes", r.snellEscapes},
                     {"deqp_escapes", r.deqpEscapes},
                     {"snell_escape", r.snellEscape},
-                    {"deqp_escape", r.deqpEscape}});
+                    {"deqp_escape", r.deqpEscape},
+                    {"widest_ratio", r.widestRatio},
+                    {"widest", r.widest}});
   std::ofstream file(path);
   file << nlohmann::json{{"oracle", report.oracle}, {"rows", rows}}.dump(1) << "\n";
   if (!file) throw std::runtime_error(fmt::format("{}: cannot write", path));
@@ -86,6 +93,8 @@ WidthReport readJson(const std::string& path) {
       s.deqpEscapes = r.at("deqp_escapes");
       s.snellEscape = r.at("snell_escape");
       s.deqpEscape = r.at("deqp_escape");
+      s.widestRatio = r.at("widest_ratio");
+      s.widest = r.at("widest");
       report.rows.push_back(std::move(s));
     }
     return report;
