@@ -31,6 +31,7 @@ struct RowStats {
   std::size_t measured = 0;   // components whose widths were compared
   std::size_t split = 0;      // samples where snell keeps two or more ways (not in the widths)
   std::size_t undefined = 0;  // samples with a component either interval leaves open
+  std::size_t zero = 0;       // components both hold at exactly 0 (not in the widths)
   double snellMedian = 0, snellMax = 0, deqpMedian = 0, deqpMax = 0;  // ULPs of the result
   std::size_t conforming = 0;  // conforming vectors held against both
   std::size_t snellEscapes = 0, deqpEscapes = 0;

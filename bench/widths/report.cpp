@@ -53,6 +53,7 @@ void writeJson(const std::string& path, const WidthReport& report) {
                     {"measured", r.measured},
                     {"split", r.split},
                     {"undefined", r.undefined},
+                    {"zero", r.zero},
                     {"snell_median", r.snellMedian},
                     {"snell_max", r.snellMax},
                     {"deqp_median", r.deqpMedian},
@@ -84,6 +85,7 @@ WidthReport readJson(const std::string& path) {
       s.measured = r.at("measured");
       s.split = r.at("split");
       s.undefined = r.at("undefined");
+      s.zero = r.at("zero");
       s.snellMedian = r.at("snell_median");
       s.snellMax = r.at("snell_max");
       s.deqpMedian = r.at("deqp_median");
