@@ -27,21 +27,6 @@
 namespace snell::widths {
 namespace listing_runs_detail {
 
-template <class T>
-class CollectValues {
- public:
-  template <class X>
-  void input(const char*, X&) {}
-  template <class X>
-  void uniform(const char*, X&) {}
-  void constant(const char*, T&) {}
-  template <class X>
-  void output(const char*, X& variable) {
-    listings::forEachComponent(variable, [&](T& value) { values.push_back(value); });
-  }
-  std::vector<T> values;
-};
-
 template <template <class> class Shader, class T>
 std::vector<T> runOnce(const ListingBindings& bindings, std::size_t vertex) {
   // Legacy listings read GL's derived state; it is added only where its
@@ -53,7 +38,7 @@ std::vector<T> runOnce(const ListingBindings& bindings, std::size_t vertex) {
   listings::BindVertex<T> bindVertex(bindings.attributes, vertex);
   shader.visit(bindVertex);
   shader.main();
-  CollectValues<T> collect;
+  listings::CollectOutputs<T> collect;
   shader.visit(collect);
   return collect.values;
 }
