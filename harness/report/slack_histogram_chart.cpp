@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 
 namespace snell {
@@ -22,6 +23,10 @@ std::filesystem::path addSlackHistogram(GnuplotBatch& batch,
       out << '\n';
     }
   }
+  // gnuplot's autoscale clips the tallest clustered bar: the top is set.
+  std::size_t tallest = 1;
+  for (const VaryingCheck& v : varyings)
+    for (std::size_t n : v.slackHistogram) tallest = std::max(tallest, n);
   std::string series;
   for (std::size_t k = 0; k < varyings.size(); ++k)
     series += fmt::format("{}'{}' using {}{} title '{}'", k ? ", " : "", data.filename().string(),
@@ -32,13 +37,13 @@ std::filesystem::path addSlackHistogram(GnuplotBatch& batch,
       "set output '{}'\n"
       "set style data histogram\nset style histogram clustered gap 1\n"
       "set style fill solid 0.8 border -1\nset boxwidth 0.9\n"
-      "set logscale y\nset yrange [0.7:*]\nset ylabel 'components'\n"
+      "set logscale y\nset yrange [0.7:{}]\nset ylabel 'components'\n"
       "set xlabel 'slack (observed error / allowed error; over 1 is outside the spec)'\n"
       "set key top right font 'sans,9'\n"
       "set object 1 rect from 5.5, graph 0 to 7.5, graph 1 behind fc rgb '#fde0dc' fs solid "
       "noborder\n"
       "plot {}",
-      svg.filename().string(), series));
+      svg.filename().string(), tallest * 3, series));
   return svg;
 }
 
