@@ -14,6 +14,9 @@ Command addListCommand(CLI::App& app);
 Command addEvalCommand(CLI::App& app);
 Command addWorkerCommand(CLI::App& app);
 Command addBlessCommand(CLI::App& app);
+Command addMergeCommand(CLI::App& app);
+Command addCompareCommand(CLI::App& app);
+Command addReportCommand(CLI::App& app);
 
 // The repository's own listings and goldens, where the binary was built from.
 std::string defaultShadersDir();

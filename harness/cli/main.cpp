@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::map<const CLI::App*, snell::cli::Command> commands;
   for (auto add : {snell::cli::addRunCommand, snell::cli::addListCommand,
-                   snell::cli::addEvalCommand, snell::cli::addBlessCommand,
+                   snell::cli::addEvalCommand, snell::cli::addBlessCommand, snell::cli::addMergeCommand,
+                   snell::cli::addCompareCommand, snell::cli::addReportCommand,
                    snell::cli::addWorkerCommand}) {
     const std::size_t before = app.get_subcommands({}).size();
     snell::cli::Command run = add(app);

@@ -4,9 +4,16 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
+#include <optional>
 #include <thread>
 
+#include "baseline/expectation_file.h"
+#include "baseline/merge_results.h"
+#include "baseline/results_file.h"
+#include "baseline/shard.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/scene_file.h"
@@ -15,6 +22,7 @@
 #include "runner/case_validation.h"
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
+#include "runner/interrupt_flag.h"
 #include "runner/supervisor.h"
 
 namespace snell::cli {
@@ -53,18 +61,51 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     throw UsageError(fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids",
                                  onlyImageCases ? "image " : "", options.filter));
   validateCases(run.cases, options.shaders);
+  if (!options.shard.empty()) {
+    const Shard shard = parseShard(options.shard);
+    std::vector<Case> mine;
+    for (std::size_t k = 0; k < run.cases.size(); ++k)
+      if (shard.contains(k)) mine.push_back(std::move(run.cases[k]));
+    run.cases = std::move(mine);
+  }
 
   const std::vector<std::string> backends =
       options.backend == "all" ? std::vector<std::string>{"gl", "vk"}
                                : std::vector<std::string>{options.backend};
+  if (!options.expectations.empty())
+    run.expectations = loadExpectations(options.expectations, backends, todayUtc());
+  std::map<std::string, CaseResult> resumed;
+  if (!options.resume.empty())
+    for (CaseResult& r : readResultsFile(options.resume)) resumed[resultKey(r)] = std::move(r);
+
+  // One slot per result the run gives, in order: a case already finished in
+  // the resumed file keeps its result; the others become tasks.
   std::vector<Task> tasks;
+  std::vector<std::optional<CaseResult>> slots;
+  std::vector<std::size_t> slotOfTask;
   for (const std::string& backend : backends)
-    for (const Case& c : run.cases)
+    for (const Case& c : run.cases) {
+      if (const CasePattern* skip = run.expectations.of(backend).skip(c.id)) {
+        run.skipped.push_back({backend, c.id, skip});
+        continue;
+      }
+      const auto done = resumed.find(backend + " " + c.id);
+      if (done != resumed.end()) {
+        slots.emplace_back(std::move(done->second));
+        continue;
+      }
+      slotOfTask.push_back(slots.size());
+      slots.emplace_back();
       tasks.push_back({c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
+    }
+  run.planned = slots.size();
 
   fs::create_directories(options.out);
   std::unique_ptr<StreamingFile> json;
   if (!options.json.empty()) json = std::make_unique<StreamingFile>(options.json);
+  for (const auto& slot : slots)
+    if (slot && json) json->writeLine(toJson(*slot).dump());
+  const InterruptFlag interrupt;
   SupervisorOptions supervisor;
   supervisor.executable = fs::read_symlink("/proc/self/exe").string();
   supervisor.shaders = fs::absolute(options.shaders).string();
@@ -74,21 +115,44 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   supervisor.jobs = options.jobs > 0
                         ? options.jobs
                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-  std::size_t finished = 0;
-  run.results = superviseTasks(tasks, supervisor, [&](std::size_t, const CaseResult& result) {
+  supervisor.stop = interrupt.flag();
+  std::size_t finished = slots.size() - tasks.size();
+  superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& result) {
     ++finished;
-    fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, tasks.size(), result.backend,
+    fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(toJson(result).dump());
+    slots[slotOfTask[task]] = result;
   });
-  checkAcrossApis(run.cases, options.out, run.results);
+  for (auto& slot : slots)
+    if (slot) run.results.push_back(std::move(*slot));
+  run.interruptedBy = interrupt.signal();
+
+  // An unexpected failure runs again: one that then passes is a flake.
+  for (int round = 0; round < options.reruns && !run.interruptedBy; ++round) {
+    std::vector<CaseResult*> again;
+    std::vector<Task> rerunTasks;
+    for (CaseResult& r : run.results)
+      if (isUnexpectedFailure(run.expectations, r) &&
+          std::all_of(r.reruns.begin(), r.reruns.end(), isFailure)) {
+        again.push_back(&r);
+        const Case& c = *std::find_if(run.cases.begin(), run.cases.end(),
+                                      [&](const Case& x) { return x.id == r.caseId; });
+        rerunTasks.push_back({r.caseId, r.backend,
+                              options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
+      }
+    if (again.empty()) break;
+    superviseTasks(rerunTasks, supervisor, [&](std::size_t task, const CaseResult& result) {
+      fmt::print(stderr, "[rerun {}] {} {} {} ({:.2f}s)\n", round + 1, result.backend,
+                 result.caseId, statusName(result.status), result.seconds);
+      again[task]->reruns.push_back(result.status);
+    });
+    run.interruptedBy = interrupt.signal();
+  }
+  checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results);
   // The streamed file is in completion order; the kept one is in task order,
   // so it is the same whatever the number of workers.
-  if (json) {
-    std::string ordered;
-    for (const CaseResult& r : run.results) ordered += toJson(r).dump() + "\n";
-    json->finish(ordered);
-  }
+  if (json) json->finish(toResultsJsonLines(run.results, run.interruptedBy != 0));
   return run;
 }
 

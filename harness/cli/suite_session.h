@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "baseline/baseline_judgement.h"
 #include "core/case.h"
 #include "runner/case_result.h"
 
@@ -21,12 +22,21 @@ struct SuiteOptions {
   bool validation = false;
   int jobs = 0;        // 0: one per core
   double timeout = 0;  // 0: each manifest's own
+  // `run` only (bless leaves them empty):
+  std::string expectations;  // folder or PREFIX-fails.txt
+  int reruns = 0;            // reruns of an unexpected failure
+  std::string shard;         // I/N
+  std::string resume;        // results file of an interrupted run
 };
 
 struct SuiteRun {
   std::vector<Manifest> manifests;
   std::vector<Case> cases;
   std::vector<CaseResult> results;  // in case order, per backend
+  ExpectationSet expectations;
+  std::vector<SkippedCase> skipped;  // kept out of the run by a skips file
+  int interruptedBy = 0;             // the signal that stopped the run, or 0
+  std::size_t planned = 0;           // results the run would have given
 };
 
 // The options `run` and `bless` share, with the repository's folders as defaults.

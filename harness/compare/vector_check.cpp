@@ -59,6 +59,12 @@ void keepIfAmongWorst(std::vector<ComponentFailure>& kept, const ComponentFailur
 
 }  // namespace
 
+std::size_t slackBin(double slack) {
+  std::size_t bin = 0;
+  while (bin + 1 < kSlackBinUpper.size() && !(slack <= kSlackBinUpper[bin])) ++bin;
+  return bin;
+}
+
 VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& observed) {
   if (expected.name != observed.name || expected.components != observed.components ||
       expected.reference.size() != observed.data.size() ||
@@ -107,6 +113,7 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
       }
       ++check.checked;
       const double s = componentSlack(*best, c, values[c]);
+      ++check.slackHistogram[slackBin(s)];
       if (s > check.worstSlack) {
         check.worstSlack = s;
         check.worstVertex = sample;

@@ -3,6 +3,7 @@
 // interval the precision rules allow for the listing's own expression, and
 // where a branch may go either way (OracleVarying::alternatives) all the
 // components of a vector must fit the same way.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -20,6 +21,14 @@ struct ComponentFailure {
   int ways = 1;  // alternatives the sample had; the values above are the nearest one's
 };
 
+// The slack distribution of a varying's checked components, for the
+// tolerance report: bin k counts slacks in (kSlackBinUpper[k-1],
+// kSlackBinUpper[k]]; bin 0 the exact results (slack 0). Above 1 is outside
+// the spec. Quarter steps below 1/4 are log-spaced: most drivers sit there.
+inline constexpr std::array<double, 8> kSlackBinUpper = {0.0, 1.0 / 64, 1.0 / 16, 0.25,
+                                                         0.5, 1.0,      2.0,      1e300};
+std::size_t slackBin(double slack);
+
 struct VaryingCheck {
   std::string name;
   std::size_t checked = 0;    // components held against an interval
@@ -28,6 +37,7 @@ struct VaryingCheck {
   std::size_t withAlternatives = 0;  // samples held against two or more ways
   double worstSlack = 0;             // over the checked components
   std::size_t worstVertex = 0;
+  std::array<std::size_t, kSlackBinUpper.size()> slackHistogram{};
   // The failures with the largest slack, worst first, at most kFailuresKept;
   // a failure identical to one kept (same component, value and interval) is
   // not kept twice.

@@ -17,6 +17,12 @@ const char* statusName(Status status) {
   return "?";
 }
 
+std::optional<Status> statusFromName(const std::string& name) {
+  for (int k = 0; k <= static_cast<int>(Status::Crash); ++k)
+    if (name == statusName(static_cast<Status>(k))) return static_cast<Status>(k);
+  return std::nullopt;
+}
+
 Status worstOf(Status a, Status b) { return static_cast<int>(a) >= static_cast<int>(b) ? a : b; }
 
 bool isFailure(Status status) { return static_cast<int>(status) >= static_cast<int>(Status::Fail); }

@@ -1,5 +1,6 @@
 #pragma once
 // Case statuses after dEQP. A case's status is the worst of its checks.
+#include <optional>
 #include <string>
 
 namespace snell {
@@ -18,6 +19,8 @@ enum class Status {
 };
 
 const char* statusName(Status status);
+// The inverse of statusName; nullopt for a name that is no status.
+std::optional<Status> statusFromName(const std::string& name);
 Status worstOf(Status a, Status b);
 // Whether a status makes `snell run` exit 1.
 bool isFailure(Status status);

@@ -8,10 +8,25 @@
 
 namespace snell {
 
-std::string toJUnitXml(const std::vector<CaseResult>& results) {
+JUnitNotes junitNotesOf(const BaselineReport& report) {
+  JUnitNotes notes;
+  for (const JudgedCase& c : report.cases) {
+    const std::string key = c.result->backend + " " + c.result->caseId;
+    if (c.outcome == Outcome::ExpectedFail)
+      notes.expectedFailures[key] = fmt::format("expected failure, {}", c.knownFailure->place.where());
+    else if (c.outcome == Outcome::KnownFlake)
+      notes.flakes[key] = fmt::format("known flake, {}", c.flakePattern->place.where());
+    else if (c.outcome == Outcome::Flake)
+      notes.flakes[key] = "failed, then passed on a rerun";
+  }
+  return notes;
+}
+
+std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes& notes) {
   pugi::xml_document doc;
   pugi::xml_node suites = doc.append_child("testsuites");
-  suites.append_attribute("name") = "snell";
+  suites.append_attribute("name") =
+      notes.incomplete.empty() ? "snell" : fmt::format("snell (incomplete: {})", notes.incomplete).c_str();
   std::map<std::string, pugi::xml_node> byBackend;
   for (const CaseResult& r : results) {
     pugi::xml_node& suite = byBackend[r.backend];
@@ -23,7 +38,17 @@ std::string toJUnitXml(const std::vector<CaseResult>& results) {
     test.append_attribute("classname") = fmt::format("snell.{}", r.backend).c_str();
     test.append_attribute("name") = r.caseId.c_str();
     test.append_attribute("time") = r.seconds;
-    if (isFailure(r.status)) {
+    const std::string key = r.backend + " " + r.caseId;
+    if (const auto expected = notes.expectedFailures.find(key); expected != notes.expectedFailures.end()) {
+      test.append_child("skipped").append_attribute("message") =
+          fmt::format("{}: {}", statusName(r.status), expected->second).c_str();
+    } else if (const auto flake = notes.flakes.find(key); flake != notes.flakes.end()) {
+      // Surefire's element for a test that failed, then passed on a rerun.
+      pugi::xml_node flaky = test.append_child("flakyFailure");
+      flaky.append_attribute("type") = statusName(r.status);
+      flaky.append_attribute("message") = flake->second.c_str();
+      flaky.append_child(pugi::node_pcdata).set_value(r.message.c_str());
+    } else if (isFailure(r.status)) {
       pugi::xml_node failure =
           test.append_child(r.status == Status::Fail ? "failure" : "error");
       failure.append_attribute("type") = statusName(r.status);
@@ -53,6 +78,11 @@ std::string toJUnitXml(const std::vector<CaseResult>& results) {
     suite.append_attribute("failures") = failures;
     suite.append_attribute("errors") = errors;
     suite.append_attribute("skipped") = skipped;
+    if (!notes.incomplete.empty()) {
+      pugi::xml_node property = suite.prepend_child("properties").append_child("property");
+      property.append_attribute("name") = "incomplete";
+      property.append_attribute("value") = notes.incomplete.c_str();
+    }
   }
   std::ostringstream out;
   doc.save(out, "  ");

@@ -25,6 +25,9 @@ struct CaseResult {
   double seconds = 0;         // the whole case
   double backendSeconds = 0;  // compile + draw + read back
   double oracleSeconds = 0;   // 0 when the oracle result came from the cache
+  // The statuses of reruns of an unexpected failure, in order: a failure
+  // that passes on a rerun is a flake, and is reported as one.
+  std::vector<Status> reruns;
 
   // One vector (or scalar) per captured output per vertex.
   std::size_t vectorsChecked() const { return vertices * varyings.size(); }

@@ -33,9 +33,8 @@ Integer count(const nlohmann::json& x) {
   return static_cast<Integer>(value);
 }
 
-Status statusFromName(const std::string& name) {
-  for (int k = 0; k <= static_cast<int>(Status::Crash); ++k)
-    if (name == statusName(static_cast<Status>(k))) return static_cast<Status>(k);
+Status statusOf(const std::string& name) {
+  if (const std::optional<Status> status = statusFromName(name)) return *status;
   throw nlohmann::json::other_error::create(501, "unknown status " + name, nullptr);
 }
 
@@ -93,10 +92,13 @@ nlohmann::json toJson(const CaseResult& r) {
                         {"failed", v.failed},
                         {"worst_slack", number(v.worstSlack)},
                         {"worst_vertex", v.worstVertex},
+                        {"slack_histogram", v.slackHistogram},
                         {"first_failures", failures}});
   }
   nlohmann::json images = nlohmann::json::array();
   for (const ImageComparison& c : r.images) images.push_back(imageToJson(c));
+  nlohmann::json reruns = nlohmann::json::array();
+  for (Status s : r.reruns) reruns.push_back(statusName(s));
   return {{"case", r.caseId},
           {"backend", r.backend},
           {"status", statusName(r.status)},
@@ -119,7 +121,8 @@ nlohmann::json toJson(const CaseResult& r) {
           {"compile_log", r.compileLog},
           {"seconds", r.seconds},
           {"backend_seconds", r.backendSeconds},
-          {"oracle_seconds", r.oracleSeconds}};
+          {"oracle_seconds", r.oracleSeconds},
+          {"reruns", reruns}};
 }
 
 CaseResult caseResultFromJson(const nlohmann::json& j) {
@@ -127,7 +130,7 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   CaseResult r;
   r.caseId = j.at("case").get<std::string>();
   r.backend = j.at("backend").get<std::string>();
-  r.status = statusFromName(j.at("status").get<std::string>());
+  r.status = statusOf(j.at("status").get<std::string>());
   r.message = j.at("message").get<std::string>();
   r.title = j.at("title").get<std::string>();
   r.sourceFile = j.at("source").at("file").get<std::string>();
@@ -145,6 +148,13 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
     check.failed = count<std::size_t>(v.at("failed"));
     check.worstSlack = numberOr(v.at("worst_slack"), kInf);
     check.worstVertex = count<std::size_t>(v.at("worst_vertex"));
+    if (v.contains("slack_histogram")) {  // absent from older records
+      const nlohmann::json& bins = v.at("slack_histogram");
+      if (!bins.is_array() || bins.size() != check.slackHistogram.size())
+        throw nlohmann::json::type_error::create(
+            302, "slack_histogram must hold " + std::to_string(check.slackHistogram.size()) + " counts", &bins);
+      for (std::size_t k = 0; k < bins.size(); ++k) check.slackHistogram[k] = count<std::size_t>(bins[k]);
+    }
     for (const nlohmann::json& f : v.at("first_failures"))
       check.worstFailures.push_back(
           {count<std::size_t>(f.at("vertex")), count<int>(f.at("component")),
@@ -157,6 +167,9 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   r.seconds = j.at("seconds").get<double>();
   r.backendSeconds = j.at("backend_seconds").get<double>();
   r.oracleSeconds = j.at("oracle_seconds").get<double>();
+  // Absent from records written before reruns existed.
+  if (j.contains("reruns"))
+    for (const nlohmann::json& s : j.at("reruns")) r.reruns.push_back(statusOf(s.get<std::string>()));
   return r;
 }
 

@@ -93,6 +93,8 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
   // Both backends' workers write these; the contents are the same and each
   // write is a rename, so neither sees the other's half-written file.
   writeImageAtomically(dir / "reference.png", reference.color);
+  // In float too, for the report's heat maps (the PNG is 8-bit sRGB).
+  writeImageAtomically(dir / "reference.exr", reference.color);
   writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
   writeImageAtomically(maskImagePath(options.outDir, c.id), maskAsImage(reference));
 

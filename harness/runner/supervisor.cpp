@@ -41,21 +41,30 @@ class Supervision {
   Supervision(const std::vector<Task>& tasks, const SupervisorOptions& options,
               const ResultCallback& onResult)
       : tasks_(tasks), options_(options), onResult_(onResult), results_(tasks.size()),
+        finished_(tasks.size(), false),
         slots_(static_cast<std::size_t>(std::max(1, options.jobs))) {
     for (std::size_t k = 0; k < tasks.size(); ++k) pending_.push_back(k);
   }
 
   std::vector<CaseResult> run() {
-    while (done_ < tasks_.size()) {
+    while (done_ < tasks_.size() && !stopped()) {
       for (Slot& slot : slots_)
         if (!slot.task && !pending_.empty()) assign(slot);
       wait();
     }
     for (Slot& slot : slots_) slot.worker.reset();
+    if (done_ < tasks_.size()) {
+      std::vector<CaseResult> finished;
+      for (std::size_t k = 0; k < results_.size(); ++k)
+        if (finished_[k]) finished.push_back(std::move(results_[k]));
+      return finished;
+    }
     return std::move(results_);
   }
 
  private:
+  bool stopped() const { return options_.stop && *options_.stop; }
+
   // Prefers a case for the backend the slot's worker already loaded.
   void assign(Slot& slot) {
     auto it = std::find_if(pending_.begin(), pending_.end(), [&](std::size_t k) {
@@ -85,6 +94,7 @@ class Supervision {
     const std::size_t index = *slot.task;
     slot.task.reset();
     results_[index] = std::move(result);
+    finished_[index] = true;
     ++done_;
     if (onResult_) onResult_(index, results_[index]);
   }
@@ -154,6 +164,8 @@ class Supervision {
       timeoutMs = static_cast<int>(std::max<long>(
           0, std::chrono::duration_cast<std::chrono::milliseconds>(nearest - Clock::now()).count() + 1));
     if (!fds.empty()) poll(fds.data(), fds.size(), timeoutMs);
+    // A signal interrupts poll(); a worker it also killed is not a Crash.
+    if (stopped()) return;
     for (std::size_t k = 0; k < fds.size(); ++k) {
       Slot& slot = *owners[k];
       if (!slot.worker || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
@@ -177,6 +189,7 @@ class Supervision {
   const SupervisorOptions& options_;
   const ResultCallback& onResult_;
   std::vector<CaseResult> results_;
+  std::vector<bool> finished_;
   std::vector<Slot> slots_;
   std::deque<std::size_t> pending_;
   std::size_t done_ = 0;

@@ -6,6 +6,7 @@
 // signal and the last lines of its stderr. Either way a fresh worker takes
 // the remaining cases, and results land by task index, so the outcome does
 // not depend on the number of workers.
+#include <csignal>
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,11 +28,15 @@ struct SupervisorOptions {
   std::string outDir;
   std::string goldenDir;  // empty: no golden comparison
   int jobs = 1;
+  // When it becomes non-zero (a signal arrived), the workers are stopped and
+  // only the finished results are returned.
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;
 
 // Returns one result per task, in task order; calls onResult as each ends.
+// Stopped (options.stop), returns the finished ones only, in task order.
 std::vector<CaseResult> superviseTasks(const std::vector<Task>& tasks,
                                        const SupervisorOptions& options,
                                        const ResultCallback& onResult);

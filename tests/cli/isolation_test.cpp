@@ -15,7 +15,7 @@
 #include <sstream>
 #include <thread>
 
-extern char** environ;
+#include "snell_process.h"
 
 namespace {
 
@@ -43,21 +43,7 @@ std::map<std::string, nlohmann::json> resultsByKey(const fs::path& file) {
   return out;
 }
 
-pid_t spawnSnell(const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {SNELL_BINARY};
-  argv.insert(argv.end(), args.begin(), args.end());
-  std::vector<char*> raw;
-  for (auto& a : argv) raw.push_back(a.data());
-  raw.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
-  return pid;
-}
+using snell::testing::spawnSnell;
 
 int exitCode(pid_t pid) {
   int status = 0;
@@ -87,7 +73,7 @@ std::vector<pid_t> workersOf(pid_t parent) {
 TEST(Isolation, EndlessListingTimesOutOnBothBackendsAndOthersPass) {
   const fs::path shaders = shadersWithFault();
   const fs::path json = shaders / "results.jsonl";
-  const pid_t pid = spawnSnell({"run", "-j", "2", "--shaders", shaders.string(), "--json",
+  const pid_t pid = spawnSnell({"run", "-j", "2", "--reruns", "0", "--shaders", shaders.string(), "--json",
                                 json.string()});
   EXPECT_EQ(exitCode(pid), 1);
   const auto results = resultsByKey(json);
@@ -109,7 +95,7 @@ TEST_P(IsolationSignal, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
   const fs::path json = shaders / "results.jsonl";
   // One worker, the endless case first: it is the case running when the
   // worker is killed; the Fresnel cases after it need a fresh worker.
-  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120",
+  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120", "--reruns", "0",
                                 "--shaders", shaders.string(), "--json", json.string()});
   std::vector<pid_t> workers;
   for (int k = 0; k < 200 && workers.empty(); ++k) {

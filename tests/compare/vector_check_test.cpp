@@ -113,6 +113,22 @@ TEST(VectorCheck, UndefinedComponentsAreCountedNotGated) {
   EXPECT_EQ(check.checked, 2u);
 }
 
+TEST(VectorCheck, SlackHistogramCountsEveryCheckedComponent) {
+  EXPECT_EQ(slackBin(0.0), 0u);
+  EXPECT_EQ(slackBin(1.0 / 64), 1u);  // bins are closed above
+  EXPECT_EQ(slackBin(0.02), 2u);
+  EXPECT_EQ(slackBin(1.0), 5u);
+  EXPECT_EQ(slackBin(1.5), 6u);
+  EXPECT_EQ(slackBin(std::numeric_limits<double>::infinity()), 7u);
+  EXPECT_EQ(slackBin(std::nan("")), 7u);  // NaN is outside the spec
+  CapturedVarying got{"R", 3, {0.5f, std::numeric_limits<float>::quiet_NaN(), 1.0f}};
+  const VaryingCheck check = checkVarying(expected3(), got);
+  std::size_t total = 0;
+  for (std::size_t n : check.slackHistogram) total += n;
+  EXPECT_EQ(total, check.checked);
+  EXPECT_EQ(check.slackHistogram.back(), 1u);  // the NaN
+}
+
 TEST(VectorCheck, MismatchedShapesAreAHarnessError) {
   CapturedVarying got{"R", 3, {0.5f, -0.25f}};
   EXPECT_THROW(checkVarying(expected3(), got), std::invalid_argument);

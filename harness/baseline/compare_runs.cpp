@@ -1,0 +1,127 @@
+#include "baseline/compare_runs.h"
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include <cmath>
+#include <map>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+std::map<std::string, const CaseResult*> keyed(const RunSide& side, bool byCase) {
+  std::map<std::string, const CaseResult*> out;
+  for (const CaseResult& r : side.results) {
+    if (!side.backend.empty() && r.backend != side.backend) continue;
+    out[byCase ? r.caseId : r.backend + " " + r.caseId] = &r;
+  }
+  return out;
+}
+
+// The largest error against the CPU reference image, or NaN for a case
+// that drew nothing.
+double referenceImageError(const CaseResult& r) {
+  for (const ImageComparison& c : r.images)
+    if (c.against == "reference") return c.maxError;
+  return std::nan("");
+}
+
+void checkDrift(const std::string& key, const std::string& metric, double from, double to,
+                double floor, const DriftRule& rule, std::vector<Drift>& drift) {
+  if (std::isnan(from) || std::isnan(to) || to <= floor) return;
+  if (to > rule.factor * std::max(from, floor)) drift.push_back({key, metric, from, to});
+}
+
+std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "inf"; }
+
+nlohmann::json changesToJson(const std::vector<StatusChange>& changes) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const StatusChange& c : changes)
+    out.push_back({{"key", c.key}, {"from", statusName(c.from)}, {"to", statusName(c.to)}});
+  return out;
+}
+
+// JSON has no infinity.
+nlohmann::json jsonNumber(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json();
+}
+
+}  // namespace
+
+RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRule& rule) {
+  if (from.backend.empty() != to.backend.empty())
+    throw UsageError(
+        fmt::format("{} and {}: name a backend on both sides (FILE@gl FILE@vk) or on "
+                    "neither",
+                    from.label, to.label));
+  const bool byCase = !from.backend.empty();
+  const auto a = keyed(from, byCase);
+  const auto b = keyed(to, byCase);
+  RunComparison c;
+  c.from = from.label;
+  c.to = to.label;
+  for (const auto& [key, old] : a) {
+    const auto it = b.find(key);
+    if (it == b.end()) {
+      c.removed.push_back(key);
+      continue;
+    }
+    const CaseResult& now = *it->second;
+    const StatusChange change{key, old->status, now.status};
+    if (old->status == now.status)
+      ++c.unchanged;
+    else if (old->status == Status::NotSupported || now.status == Status::NotSupported)
+      c.changes.push_back(change);
+    else if (worstOf(old->status, now.status) == now.status)
+      c.regressions.push_back(change);
+    else
+      c.fixes.push_back(change);
+    checkDrift(key, "worst slack", old->worstSlack(), now.worstSlack(), rule.slackFloor, rule,
+               c.drift);
+    checkDrift(key, "image error vs reference", referenceImageError(*old), referenceImageError(now),
+               rule.imageFloor, rule, c.drift);
+  }
+  for (const auto& [key, r] : b)
+    if (!a.count(key)) c.added.push_back(key);
+  return c;
+}
+
+void printComparison(std::ostream& out, const RunComparison& c, const DriftRule& rule) {
+  fmt::print(out,
+             "{} -> {}: {} regressions, {} fixes, {} changes, {} new, {} removed, {} drifted "
+             "(grew more than {}x), {} unchanged\n",
+             c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.added.size(),
+             c.removed.size(), c.drift.size(), rule.factor, c.unchanged);
+  for (const auto& [word, list] : {std::pair{"regression", &c.regressions},
+                                   std::pair{"fix", &c.fixes}, std::pair{"change", &c.changes}})
+    for (const StatusChange& s : *list)
+      fmt::print(out, "  {:<10}  {}: {} -> {}\n", word, s.key, statusName(s.from),
+                 statusName(s.to));
+  for (const std::string& key : c.added) fmt::print(out, "  {:<10}  {}\n", "new", key);
+  for (const std::string& key : c.removed) fmt::print(out, "  {:<10}  {}\n", "removed", key);
+  for (const Drift& d : c.drift)
+    fmt::print(out, "  {:<10}  {}: {} {} -> {}{}\n", "drift", d.key, d.metric, number(d.from),
+               number(d.to), d.from > 0 ? fmt::format(" (x{:.1f})", d.to / d.from) : "");
+}
+
+nlohmann::json comparisonToJson(const RunComparison& c) {
+  nlohmann::json drift = nlohmann::json::array();
+  for (const Drift& d : c.drift)
+    drift.push_back({{"key", d.key},
+                     {"metric", d.metric},
+                     {"from", jsonNumber(d.from)},
+                     {"to", jsonNumber(d.to)}});
+  return {{"from", c.from},
+          {"to", c.to},
+          {"regressions", changesToJson(c.regressions)},
+          {"fixes", changesToJson(c.fixes)},
+          {"changes", changesToJson(c.changes)},
+          {"new", c.added},
+          {"removed", c.removed},
+          {"drift", drift},
+          {"unchanged", c.unchanged}};
+}
+
+}  // namespace snell

@@ -1,0 +1,196 @@
+#include "baseline/expectation_file.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <fstream>
+#include <utility>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string trim(const std::string& s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+}
+
+[[noreturn]] void badLine(const fs::path& file, int line, const std::string& what) {
+  throw UsageError(fmt::format("{}:{}: {}", file.string(), line, what));
+}
+
+bool isDate(const std::string& s) {
+  if (s.size() != 10 || s[4] != '-' || s[7] != '-') return false;
+  for (std::size_t k : {0, 1, 2, 3, 5, 6, 8, 9})
+    if (s[k] < '0' || s[k] > '9') return false;
+  const std::chrono::year_month_day date{std::chrono::year(std::stoi(s.substr(0, 4))),
+                                         std::chrono::month(std::stoul(s.substr(5, 2))),
+                                         std::chrono::day(std::stoul(s.substr(8, 2)))};
+  return date.ok();
+}
+
+// A `# key: value` comment with one of the metadata keys; other comments are
+// free text. Returns false for free text.
+bool readMetadata(const std::string& comment, EntryMetadata& metadata, const fs::path& file,
+                  int line) {
+  const auto colon = comment.find(':');
+  if (colon == std::string::npos) return false;
+  const std::string key = trim(comment.substr(0, colon));
+  const std::string value = trim(comment.substr(colon + 1));
+  std::string* field = key == "reason"    ? &metadata.reason
+                       : key == "link"    ? &metadata.link
+                       : key == "added"   ? &metadata.added
+                       : key == "expires" ? &metadata.expires
+                                          : nullptr;
+  if (!field) return false;
+  if ((key == "added" || key == "expires") && !isDate(value))
+    badLine(file, line, fmt::format("`{}: {}` is not a date; write it as YYYY-MM-DD", key, value));
+  *field = value;
+  return true;
+}
+
+template <class Entry>
+void readFile(const fs::path& file, const std::string& today, std::vector<Entry>& entries) {
+  std::ifstream in(file);
+  if (!in) return;  // a missing file is an empty list
+  EntryMetadata pending;
+  int number = 0;
+  for (std::string raw; std::getline(in, raw);) {
+    ++number;
+    const std::string line = trim(raw);
+    if (line.empty()) {
+      pending = {};  // metadata belongs to the entry directly below it
+      continue;
+    }
+    if (line[0] == '#') {
+      readMetadata(trim(line.substr(1)), pending, file, number);
+      continue;
+    }
+    if (!pending.expires.empty() && pending.expires < today)
+      badLine(
+          file, number,
+          fmt::format("this entry expired on {}{}; check the case again, then delete the "
+                      "entry or give it a new `# expires:` date",
+                      pending.expires, pending.reason.empty() ? "" : " (" + pending.reason + ")"));
+    Entry entry;
+    entry.place = {file.string(), number, line};
+    entry.metadata = std::exchange(pending, {});
+    if constexpr (std::is_same_v<Entry, KnownFailure>) {
+      const auto comma = line.rfind(',');
+      if (comma == std::string::npos)
+        badLine(file, number, "expected `case,Status` (a case id, a comma and a status)");
+      entry.caseId = trim(line.substr(0, comma));
+      const std::string status = trim(line.substr(comma + 1));
+      const std::optional<Status> parsed = statusFromName(status);
+      if (!parsed || !isFailure(*parsed))
+        badLine(
+            file, number,
+            fmt::format("`{}` is not a failing status; use Fail, CompileError, Timeout or Crash",
+                        status));
+      entry.status = *parsed;
+    } else {
+      entry.pattern = line;
+      try {
+        entry.regex = std::regex(line, std::regex::ECMAScript);
+      } catch (const std::regex_error& error) {
+        badLine(file, number,
+                fmt::format("`{}` is not a regular expression ({})", line, error.what()));
+      }
+    }
+    entries.push_back(std::move(entry));
+  }
+  if (!pending.reason.empty() || !pending.expires.empty() || !pending.added.empty() ||
+      !pending.link.empty())
+    badLine(file, number, "metadata comments at the end of the file belong to no entry");
+}
+
+const CasePattern* firstMatch(const std::vector<CasePattern>& patterns, const std::string& caseId) {
+  for (const CasePattern& p : patterns)
+    if (std::regex_search(caseId, p.regex)) return &p;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string EntryPlace::where() const { return fmt::format("{}:{}", file, line); }
+
+const KnownFailure* Expectations::knownFailure(const std::string& caseId) const {
+  for (const KnownFailure& f : fails)
+    if (f.caseId == caseId) return &f;
+  return nullptr;
+}
+
+const CasePattern* Expectations::flake(const std::string& caseId) const {
+  return firstMatch(flakes, caseId);
+}
+
+const CasePattern* Expectations::skip(const std::string& caseId) const {
+  return firstMatch(skips, caseId);
+}
+
+const Expectations& ExpectationSet::of(const std::string& backend) const {
+  static const Expectations none;
+  const auto it = byBackend.find(backend);
+  return it == byBackend.end() ? none : it->second;
+}
+
+Expectations readExpectationFiles(const fs::path& fails, const fs::path& flakes,
+                                  const fs::path& skips, const std::string& today) {
+  Expectations e;
+  readFile(fails, today, e.fails);
+  readFile(flakes, today, e.flakes);
+  readFile(skips, today, e.skips);
+  std::map<std::string, const KnownFailure*> seen;
+  for (const KnownFailure& f : e.fails)
+    if (!seen.emplace(f.caseId, &f).second)
+      badLine(f.place.file, f.place.line,
+              fmt::format("{} is listed twice (first at line {}); keep one line", f.caseId,
+                          seen[f.caseId]->place.line));
+  return e;
+}
+
+ExpectationSet loadExpectations(const fs::path& source, const std::vector<std::string>& backends,
+                                const std::string& today) {
+  ExpectationSet set;
+  set.source = source.string();
+  if (fs::is_directory(source)) {
+    for (const std::string& backend : backends)
+      set.byBackend[backend] = readExpectationFiles(source / (backend + "-fails.txt"),
+                                                    source / (backend + "-flakes.txt"),
+                                                    source / (backend + "-skips.txt"), today);
+    return set;
+  }
+  const std::string name = source.filename().string();
+  for (const char* suffix : {"-fails.txt", "-flakes.txt", "-skips.txt"}) {
+    const std::string s = suffix;
+    if (name.size() <= s.size() || name.compare(name.size() - s.size(), s.size(), s) != 0) continue;
+    if (!fs::exists(source))
+      throw UsageError(
+          fmt::format("{}: no such file; give an expectations folder or an existing "
+                      "PREFIX-fails.txt, -flakes.txt or -skips.txt",
+                      source.string()));
+    const fs::path prefix = source.parent_path() / name.substr(0, name.size() - s.size());
+    const Expectations e =
+        readExpectationFiles(prefix.string() + "-fails.txt", prefix.string() + "-flakes.txt",
+                             prefix.string() + "-skips.txt", today);
+    for (const std::string& backend : backends) set.byBackend[backend] = e;
+    return set;
+  }
+  throw UsageError(fmt::format(
+      "{}: not an expectations folder nor a file named PREFIX-fails.txt, PREFIX-flakes.txt or "
+      "PREFIX-skips.txt",
+      source.string()));
+}
+
+std::string todayUtc() {
+  const auto days = std::chrono::floor<std::chrono::days>(std::chrono::system_clock::now());
+  const std::chrono::year_month_day date{days};
+  return fmt::format("{:04}-{:02}-{:02}", static_cast<int>(date.year()),
+                     static_cast<unsigned>(date.month()), static_cast<unsigned>(date.day()));
+}
+
+}  // namespace snell

@@ -1,0 +1,69 @@
+// `snell compare A B [C ...]`: each run against the one before it.
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include "baseline/compare_runs.h"
+#include "baseline/results_file.h"
+#include "cli/commands.h"
+
+namespace snell::cli {
+namespace {
+
+// FILE, or FILE@BACKEND where FILE@BACKEND is not itself a file.
+RunSide readSide(const std::string& text) {
+  RunSide side;
+  side.label = text;
+  std::string path = text;
+  const auto at = text.rfind('@');
+  if (!std::filesystem::exists(text) && at != std::string::npos) {
+    path = text.substr(0, at);
+    side.backend = text.substr(at + 1);
+  }
+  side.results = readResultsFile(path);
+  return side;
+}
+
+}  // namespace
+
+Command addCompareCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "compare", "Compare runs: regressions, fixes, changes, new, removed, metric drift");
+  struct Options {
+    std::vector<std::string> runs;
+    bool json = false;
+    double drift = 2.0;
+  };
+  auto options = std::make_shared<Options>();
+  sub->add_option("runs", options->runs,
+                  "Results files (snell run --json), oldest first; FILE@gl selects one backend, "
+                  "so FILE@gl FILE@vk compares the two halves of a run")
+      ->required()
+      ->expected(2, 1000);
+  sub->add_flag("--json", options->json, "Print the comparisons as JSON");
+  sub->add_option("--drift", options->drift,
+                  "Report a worst slack or image error that grew by more than this factor")
+      ->check(CLI::Range(1.0, 1e12));
+  sub->footer("Exit 1 when any comparison has a regression (a status worse than before).");
+  return [options] {
+    std::vector<RunSide> sides;
+    for (const std::string& run : options->runs) sides.push_back(readSide(run));
+    DriftRule rule;
+    rule.factor = options->drift;
+    nlohmann::json all = nlohmann::json::array();
+    bool regressed = false;
+    for (std::size_t k = 1; k < sides.size(); ++k) {
+      const RunComparison c = compareRuns(sides[k - 1], sides[k], rule);
+      regressed = regressed || !c.regressions.empty();
+      if (options->json)
+        all.push_back(comparisonToJson(c));
+      else
+        printComparison(std::cout, c, rule);
+    }
+    if (options->json) std::cout << all.dump(2) << "\n";
+    return regressed ? 1 : 0;
+  };
+}
+
+}  // namespace snell::cli

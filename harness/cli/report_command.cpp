@@ -1,0 +1,53 @@
+// `snell report RESULTS... -o DIR`: the self-contained HTML report.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <chrono>
+
+#include "baseline/results_file.h"
+#include "cli/commands.h"
+#include "report/html_report.h"
+
+namespace snell::cli {
+
+Command addReportCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand(
+      "report", "Write a self-contained HTML report (tolerance report, heat maps, comparisons)");
+  struct Options {
+    std::vector<std::string> results;
+    std::string out;
+    std::string images = "snell-out";
+    std::string shaders = defaultShadersDir();
+  };
+  auto options = std::make_shared<Options>();
+  sub->add_option("results", options->results,
+                  "Results files (snell run --json or merge), shown side by side in this order")
+      ->required()
+      ->check(CLI::ExistingFile);
+  sub->add_option("-o,--out", options->out, "Folder to write index.html to")->required();
+  sub->add_option("--images", options->images,
+                  "The last run's --out folder: its rendered images and references (default: "
+                  "snell-out)");
+  sub->add_option("--shaders", options->shaders, "Folder of listings (titles, fail thresholds)")
+      ->check(CLI::ExistingDirectory);
+  return [options] {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<ReportRun> runs;
+    for (const std::string& file : options->results) runs.push_back({file, readResultsFile(file)});
+    const std::vector<Manifest> manifests = loadManifests(options->shaders);
+    ReportOptions report;
+    report.imagesDir = options->images;
+    report.catalog = expandCases(manifests, "");
+    report.title = fmt::format("{}", fmt::join(options->results, ", "));
+    const ReportStats stats = writeHtmlReport(runs, report, options->out);
+    fmt::print(
+        "{}/index.html: {} cases, {} histograms, {} heat maps, {} pictures, {:.1f} MB, "
+        "{:.2f} s\n",
+        options->out, stats.cases, stats.histograms, stats.heatMaps, stats.pictures,
+        stats.bytes / 1e6,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return 0;
+  };
+}
+
+}  // namespace snell::cli

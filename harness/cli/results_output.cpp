@@ -1,0 +1,77 @@
+#include "cli/results_output.h"
+
+#include <fmt/format.h>
+#include <string.h>
+
+#include <filesystem>
+#include <iostream>
+#include <map>
+
+#include "baseline/results_csv.h"
+#include "core/atomic_file.h"
+#include "report/junit.h"
+#include "report/summary_table.h"
+
+namespace snell::cli {
+namespace {
+
+void printThroughput(const std::vector<CaseResult>& results) {
+  std::map<std::string, std::pair<std::size_t, double>> perBackend;  // vectors, seconds
+  std::map<std::string, double> worst;
+  for (const CaseResult& r : results) {
+    perBackend[r.backend].first += r.vectorsChecked();
+    perBackend[r.backend].second += r.backendSeconds;
+    worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
+  }
+  for (const auto& [backend, totals] : perBackend)
+    fmt::print(
+        "{}: {} vectors checked, {:.0f} per second of backend time (compile, draw, read back), "
+        "worst slack {:.3f}\n",
+        backend, totals.first, totals.second > 0 ? totals.first / totals.second : 0.0,
+        worst[backend]);
+}
+
+}  // namespace
+
+int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& expectations,
+                  const std::vector<SkippedCase>& skipped, const ResultsOutput& output) {
+  const BaselineReport report = judgeResults(expectations, results, skipped);
+  const std::string incomplete =
+      output.interruptedBy
+          ? fmt::format("interrupted by SIG{} after {} of {} results",
+                        sigabbrev_np(output.interruptedBy), results.size(), output.planned)
+          : "";
+  if (!output.json.empty())
+    writeFileAtomically(std::filesystem::path(output.json).replace_extension(".csv"),
+                        toResultsCsv(report));
+  if (!output.junit.empty()) {
+    JUnitNotes notes = junitNotesOf(report);
+    notes.incomplete = incomplete;
+    writeFileAtomically(output.junit, toJUnitXml(results, notes));
+  }
+
+  printSummaryTable(std::cout, results);
+  printThroughput(results);
+  // Failures first, with why; then what passes with a story to tell: the
+  // diagnostics of listings that must not compile, and why a backend is
+  // not supported.
+  for (const JudgedCase& c : report.cases)
+    if (c.outcome == Outcome::UnexpectedFail)
+      fmt::print("\n{} on {}: {}\n{}", c.result->caseId, c.result->backend,
+                 statusName(c.result->status), c.result->message);
+  for (const CaseResult& r : results)
+    if (r.status == Status::ExpectedCompileError || r.status == Status::NotSupported)
+      fmt::print("\n{} on {}: {}: {}{}", r.caseId, r.backend, statusName(r.status), r.message,
+                 r.message.empty() || r.message.back() != '\n' ? "\n" : "");
+  if (!expectations.empty() || report.count(Outcome::Flake) > 0) {
+    printBaselineReport(std::cout, expectations, report);
+  }
+  if (output.interruptedBy) {
+    fmt::print("\nsnell: {}; the results written are marked incomplete (--resume {} goes on)\n",
+               incomplete, output.json.empty() ? "FILE" : output.json);
+    return 130;
+  }
+  return report.failed() ? 1 : 0;
+}
+
+}  // namespace snell::cli

@@ -1,0 +1,24 @@
+#pragma once
+// What `run` and `merge` print and write once the results are in: the
+// summary, the failures with their reasons, the expectations report, the
+// deqp-runner results.csv beside the JSON Lines, and JUnit.
+#include <string>
+#include <vector>
+
+#include "baseline/baseline_judgement.h"
+#include "runner/case_result.h"
+
+namespace snell::cli {
+
+struct ResultsOutput {
+  std::string json;   // the JSON Lines file (already written); results.csv goes beside it
+  std::string junit;  // empty: none
+  int interruptedBy = 0;
+  std::size_t planned = 0;
+};
+
+// Returns the exit code: 130 when interrupted, 1 for an unexpected failure, else 0.
+int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& expectations,
+                  const std::vector<SkippedCase>& skipped, const ResultsOutput& output);
+
+}  // namespace snell::cli

@@ -1,0 +1,33 @@
+#pragma once
+// Every chart of a report drawn by one gnuplot process: starting gnuplot
+// costs more than most plots, so the plots are collected into one script
+// (each with its own `set output`) and run once.
+#include <filesystem>
+#include <string>
+
+namespace snell {
+
+class GnuplotBatch {
+ public:
+  // Data and outputs live in `workDir`, which must exist.
+  explicit GnuplotBatch(std::filesystem::path workDir);
+
+  // A fresh file name in the work folder, e.g. file("hist", ".svg").
+  std::filesystem::path file(const std::string& stem, const std::string& extension);
+  // One plot: commands that set the terminal, the output and plot. Settings
+  // are reset after it, so plots do not leak into each other.
+  void add(const std::string& commands);
+  // Runs gnuplot on the script; throws SetupError with gnuplot's message
+  // when it is missing or fails.
+  void run();
+
+ private:
+  std::filesystem::path dir_;
+  std::string script_;
+  int files_ = 0;
+};
+
+// Reads a whole file as bytes; empty when it is missing.
+std::string readBytes(const std::filesystem::path& path);
+
+}  // namespace snell

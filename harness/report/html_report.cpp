@@ -1,0 +1,440 @@
+#include "report/html_report.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <kainjow/mustache.hpp>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "compare/image_io.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "report/data_uri.h"
+#include "report/gnuplot_batch.h"
+#include "report/heat_map_chart.h"
+#include "report/report_template.h"
+#include "report/slack_histogram_chart.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+using kainjow::mustache::data;
+using kainjow::mustache::list;
+
+std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "inf"; }
+
+std::string listingOf(const std::string& caseId) {
+  const auto slash = caseId.rfind('/');
+  return slash == std::string::npos ? caseId : caseId.substr(0, slash);
+}
+
+std::string anchorOf(const std::string& caseId) {
+  std::string a = "case-";
+  for (char c : caseId) a += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return a;
+}
+
+struct Column {
+  std::size_t run;
+  std::string backend;
+  std::string name;
+};
+
+// A picture drawn later by gnuplot, or a file read now.
+struct PendingPicture {
+  std::string caption, cssClass;
+  fs::path file;
+  std::string mime;
+};
+
+std::vector<bool> maskFlags(const fs::path& maskFile) {
+  std::vector<bool> flags;
+  if (!fs::exists(maskFile)) return flags;
+  const Image mask = readImage(maskFile);
+  flags.resize(static_cast<std::size_t>(mask.width) * mask.height);
+  for (std::size_t p = 0; p < flags.size(); ++p) flags[p] = mask.pixels[p * 4] != 0;
+  return flags;
+}
+
+// Images whose size differs from the other's cannot be differenced.
+bool sameSize(const Image& a, const Image& b) { return a.width == b.width && a.height == b.height; }
+
+class ReportBuilder {
+ public:
+  ReportBuilder(const std::vector<ReportRun>& runs, const ReportOptions& options, fs::path work)
+      : runs_(runs), options_(options), batch_(work) {
+    for (const Case& c : options.catalog) catalog_[c.id] = &c;
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      std::vector<std::string> seen;
+      for (const CaseResult& result : runs[r].results) {
+        if (std::find(seen.begin(), seen.end(), result.backend) != seen.end()) continue;
+        seen.push_back(result.backend);
+        columns_.push_back({r, result.backend,
+                            runs.size() == 1
+                                ? result.backend
+                                : fmt::format("{}: {}", runs[r].label, result.backend)});
+      }
+      for (const CaseResult& result : runs[r].results) {
+        byCase_[result.caseId][columnOf(r, result.backend)] = &result;
+        if (std::find(caseOrder_.begin(), caseOrder_.end(), result.caseId) == caseOrder_.end())
+          caseOrder_.push_back(result.caseId);
+      }
+    }
+  }
+
+  std::string render(ReportStats& stats) {
+    data page;
+    page.set("title", options_.title);
+    page.set("generated", generatedAt());
+    std::size_t count = 0;
+    std::map<std::string, std::size_t> tally;
+    for (const ReportRun& run : runs_)
+      for (const CaseResult& r : run.results) {
+        ++count;
+        ++tally[statusName(r.status)];
+      }
+    page.set("result_count", std::to_string(count));
+    list tallyList;
+    for (const auto& [status, n] : tally) {
+      data t;
+      t.set("status", status);
+      t.set("count", std::to_string(n));
+      tallyList.push_back(t);
+    }
+    page.set("tally", tallyList);
+    list columns;
+    for (const Column& c : columns_) columns.push_back(data("name", c.name));
+    page.set("columns", columns);
+    page.set("listings", listings());
+    page.set("matrix", matrix());
+    page.set("drivers", drivers());
+    // Cases (charts are queued now and drawn in one gnuplot run below).
+    std::vector<std::string> order = caseOrder_;
+    std::stable_sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) {
+      return failing(a) && !failing(b);
+    });
+    for (const std::string& id : order) casePages_.push_back(casePage(id, stats));
+    batch_.run();
+    list cases;
+    for (CasePage& p : casePages_) cases.push_back(finish(p, stats));
+    page.set("cases", cases);
+    stats.cases = order.size();
+    kainjow::mustache::mustache tmpl{std::string(kReportTemplate)};
+    if (!tmpl.is_valid()) throw SetupError("report template: " + tmpl.error_message());
+    return tmpl.render(page);
+  }
+
+ private:
+  struct ResultPage {
+    data fields;
+    fs::path histogram;
+    std::vector<PendingPicture> pictures;
+  };
+  struct CasePage {
+    data fields;
+    std::vector<ResultPage> results;
+    std::vector<PendingPicture> pairs;
+  };
+
+  std::size_t columnOf(std::size_t run, const std::string& backend) const {
+    for (std::size_t k = 0; k < columns_.size(); ++k)
+      if (columns_[k].run == run && columns_[k].backend == backend) return k;
+    return 0;
+  }
+
+  bool failing(const std::string& id) const {
+    for (const auto& [column, r] : byCase_.at(id))
+      if (isFailure(r->status)) return true;
+    return false;
+  }
+
+  static std::string generatedAt() {
+    const auto now = std::chrono::floor<std::chrono::seconds>(std::chrono::system_clock::now());
+    const auto days = std::chrono::floor<std::chrono::days>(now);
+    const std::chrono::year_month_day date{days};
+    const std::chrono::hh_mm_ss time{now - days};
+    return fmt::format("{:04}-{:02}-{:02} {:02}:{:02} UTC", static_cast<int>(date.year()),
+                       static_cast<unsigned>(date.month()), static_cast<unsigned>(date.day()),
+                       time.hours().count(), time.minutes().count());
+  }
+
+  list listings() const {
+    std::vector<std::string> names;
+    std::map<std::string, std::map<std::size_t, std::map<std::string, std::size_t>>> counts;
+    std::map<std::string, std::map<std::size_t, Status>> worst;
+    for (const std::string& id : caseOrder_) {
+      const std::string name = listingOf(id);
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+      for (const auto& [column, r] : byCase_.at(id)) {
+        ++counts[name][column][statusName(r->status)];
+        const auto it = worst[name].find(column);
+        worst[name][column] = it == worst[name].end() ? r->status : worstOf(it->second, r->status);
+      }
+    }
+    list rows;
+    for (const std::string& name : names) {
+      data row;
+      row.set("name", name);
+      list cells;
+      for (std::size_t k = 0; k < columns_.size(); ++k) {
+        data cell;
+        std::string text;
+        for (const auto& [status, n] : counts[name][k])
+          text += fmt::format("{}{} {}", text.empty() ? "" : ", ", n, status);
+        cell.set("text", text.empty() ? "-" : text);
+        cell.set("worst", worst[name].count(k) ? statusName(worst[name][k]) : "");
+        cells.push_back(cell);
+      }
+      row.set("cells", cells);
+      rows.push_back(row);
+    }
+    return rows;
+  }
+
+  list matrix() const {
+    list rows;
+    for (const std::string& id : caseOrder_) {
+      data row;
+      row.set("id", id);
+      row.set("anchor", anchorOf(id));
+      list cells;
+      for (std::size_t k = 0; k < columns_.size(); ++k) {
+        data cell;
+        const auto it = byCase_.at(id).find(k);
+        if (it == byCase_.at(id).end()) {
+          cell.set("status", "-");
+          cell.set("slack", "");
+        } else {
+          cell.set("status", statusName(it->second->status));
+          cell.set("slack", it->second->componentsChecked()
+                                ? "slack " + number(it->second->worstSlack())
+                                : "-");
+        }
+        cells.push_back(cell);
+      }
+      row.set("cells", cells);
+      rows.push_back(row);
+    }
+    return rows;
+  }
+
+  list drivers() const {
+    list rows;
+    std::set<std::string> seen;
+    for (const Column& c : columns_)
+      for (const CaseResult& r : runs_[c.run].results) {
+        if (r.backend != c.backend || r.driver.renderer.empty()) continue;
+        const std::string key = fmt::format("{} {} {}", c.run, r.backend, r.driver.renderer);
+        if (!seen.insert(key).second) continue;
+        data row;
+        row.set("run", runs_[c.run].label);
+        row.set("backend", r.backend);
+        row.set("api", r.driver.api);
+        row.set("api_version", r.driver.apiVersion);
+        row.set("renderer", r.driver.renderer);
+        row.set("driver_version", r.driver.driverVersion);
+        row.set("device_type", r.driver.deviceType);
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  double failThreshold(const std::string& id) const {
+    const auto it = catalog_.find(id);
+    return it != catalog_.end() && it->second->spec.image.fail > 0 ? it->second->spec.image.fail
+                                                                   : 0.004;
+  }
+
+  // Read once: a case's images serve several heat maps.
+  const Image* image(const fs::path& path) {
+    auto [it, added] = images_.try_emplace(path);
+    if (added && fs::exists(path)) {
+      try {
+        it->second = readImage(path);
+      } catch (const UsageError&) {
+        // An unreadable image is left out of the report, like a missing one.
+      }
+    }
+    return it->second ? &*it->second : nullptr;
+  }
+
+  CasePage casePage(const std::string& id, ReportStats& stats) {
+    CasePage page;
+    page.fields.set("id", id);
+    page.fields.set("anchor", anchorOf(id));
+    page.fields.set("failing", failing(id));
+    const CaseResult& any = *byCase_.at(id).begin()->second;
+    page.fields.set("title", any.title);
+    page.fields.set("source", fmt::format("{} ({})", any.sourceWhere, any.sourceFile));
+    const fs::path dir = options_.imagesDir / id;
+    const std::vector<bool> masked = maskFlags(dir / "mask.exr");
+    const double fail = failThreshold(id);
+    const Image* reference = image(dir / "reference.exr");
+    bool referenceShown = false;
+    for (const auto& [column, r] : byCase_.at(id)) {
+      ResultPage rp;
+      rp.fields.set("column", columns_[column].name);
+      rp.fields.set("status", statusName(r->status));
+      if (r->status != Status::Pass) rp.fields.set("message", r->message);
+      list varyings, failures;
+      for (const VaryingCheck& v : r->varyings) {
+        data row;
+        row.set("name", v.name);
+        row.set("checked", std::to_string(v.checked));
+        row.set("undefined", std::to_string(v.undefined));
+        row.set("failed", std::to_string(v.failed));
+        row.set("worst", v.checked ? number(v.worstSlack) : "-");
+        row.set("worst_vertex", v.checked ? std::to_string(v.worstVertex) : "-");
+        varyings.push_back(row);
+        for (const ComponentFailure& f : v.worstFailures) {
+          data fr;
+          fr.set("output", v.name);
+          fr.set("vertex", std::to_string(f.vertex));
+          fr.set("component", std::string(1, "xyzw"[f.component & 3]));
+          fr.set("observed", fmt::format("{:.9g}", f.observed));
+          fr.set("reference", fmt::format("{:.9g}", f.reference));
+          fr.set("lo", fmt::format("{:.9g}", f.lo));
+          fr.set("hi", fmt::format("{:.9g}", f.hi));
+          fr.set("slack", number(f.slack));
+          failures.push_back(fr);
+        }
+      }
+      rp.fields.set("has_varyings", !r->varyings.empty());
+      rp.fields.set("varyings", varyings);
+      rp.fields.set("has_failures", !failures.empty());
+      rp.fields.set("failures", failures);
+      list images;
+      for (const ImageComparison& c : r->images) {
+        data row;
+        row.set("against", c.against);
+        row.set("verdict", imageVerdictName(c.verdict));
+        row.set("max_error", number(c.maxError));
+        row.set("at", fmt::format("({}, {})", c.maxX, c.maxY));
+        row.set("failed", std::to_string(c.failed));
+        row.set("compared", std::to_string(c.compared));
+        std::string m;
+        for (const auto& [reason, n] : c.masked)
+          if (n) m += fmt::format("{}{} {}", m.empty() ? "" : ", ", reason, n);
+        row.set("masked", m.empty() ? "none" : m);
+        images.push_back(row);
+      }
+      rp.fields.set("has_images", !r->images.empty());
+      rp.fields.set("images", images);
+      std::size_t checked = 0;
+      for (const VaryingCheck& v : r->varyings) checked += v.checked;
+      if (checked) {
+        rp.histogram = addSlackHistogram(batch_, r->varyings);
+        ++stats.histograms;
+      }
+      const std::string& backend = columns_[column].backend;
+      // Images on disk belong to the last run that wrote the folder: shown
+      // for the last run only.
+      if (columns_[column].run + 1 == runs_.size()) {
+        if (!referenceShown && fs::exists(dir / "reference.png")) {
+          rp.pictures.push_back({"CPU reference", "picture", dir / "reference.png", "image/png"});
+          referenceShown = true;
+        }
+        if (fs::exists(dir / (backend + ".png")))
+          rp.pictures.push_back(
+              {backend + " rendered", "picture", dir / (backend + ".png"), "image/png"});
+        const Image* rendered = image(dir / (backend + ".exr"));
+        if (rendered && reference && sameSize(*rendered, *reference)) {
+          HeatMapSummary summary;
+          const fs::path png =
+              addHeatMap(batch_, fmt::format("{} against the CPU reference", backend), *rendered,
+                         *reference, masked, fail, summary);
+          rp.pictures.push_back({fmt::format("{} against the reference: {} pixels over {:g}",
+                                             backend, summary.overThreshold, fail),
+                                 "", png, "image/png"});
+          ++stats.heatMaps;
+        }
+      }
+      page.results.push_back(std::move(rp));
+    }
+    // Every pair of backends of the last run that rendered the case.
+    std::vector<std::string> rendered;
+    for (const auto& [column, r] : byCase_.at(id))
+      if (columns_[column].run + 1 == runs_.size() &&
+          image(dir / (columns_[column].backend + ".exr")))
+        rendered.push_back(columns_[column].backend);
+    for (std::size_t a = 0; a < rendered.size(); ++a)
+      for (std::size_t b = a + 1; b < rendered.size(); ++b) {
+        const Image& first = *image(dir / (rendered[a] + ".exr"));
+        const Image& second = *image(dir / (rendered[b] + ".exr"));
+        if (!sameSize(first, second)) continue;
+        HeatMapSummary summary;
+        const fs::path png =
+            addHeatMap(batch_, fmt::format("{} against {}", rendered[b], rendered[a]), second,
+                       first, masked, fail, summary);
+        page.pairs.push_back(
+            {fmt::format("{} against {}: {} pixels over {:g}, largest {:.3g}", rendered[b],
+                         rendered[a], summary.overThreshold, fail, summary.maxError),
+             "", png, "image/png"});
+        ++stats.heatMaps;
+      }
+    return page;
+  }
+
+  data finish(CasePage& page, ReportStats& stats) {
+    list results;
+    for (ResultPage& rp : page.results) {
+      if (!rp.histogram.empty())
+        rp.fields.set("histogram", dataUri("image/svg+xml", readBytes(rp.histogram)));
+      rp.fields.set("pictures", pictures(rp.pictures, stats));
+      results.push_back(rp.fields);
+    }
+    page.fields.set("results", results);
+    page.fields.set("has_pairs", !page.pairs.empty());
+    page.fields.set("pairs", pictures(page.pairs, stats));
+    return page.fields;
+  }
+
+  list pictures(const std::vector<PendingPicture>& pending, ReportStats& stats) {
+    list out;
+    for (const PendingPicture& p : pending) {
+      const std::string bytes = readBytes(p.file);
+      if (bytes.empty()) continue;
+      data picture;
+      picture.set("caption", p.caption);
+      picture.set("class", p.cssClass);
+      picture.set("uri", dataUri(p.mime, bytes));
+      out.push_back(picture);
+      ++stats.pictures;
+    }
+    return out;
+  }
+
+  const std::vector<ReportRun>& runs_;
+  const ReportOptions& options_;
+  GnuplotBatch batch_;
+  std::map<std::string, const Case*> catalog_;
+  std::vector<Column> columns_;
+  std::vector<std::string> caseOrder_;
+  std::map<std::string, std::map<std::size_t, const CaseResult*>> byCase_;
+  std::map<fs::path, std::optional<Image>> images_;
+  std::vector<CasePage> casePages_;
+};
+
+}  // namespace
+
+ReportStats writeHtmlReport(const std::vector<ReportRun>& runs, const ReportOptions& options,
+                            const fs::path& outDir) {
+  fs::create_directories(outDir);
+  const fs::path work = outDir / "work";
+  fs::remove_all(work);
+  fs::create_directories(work);
+  ReportStats stats;
+  const std::string html = ReportBuilder(runs, options, work).render(stats);
+  writeFileAtomically(outDir / "index.html", html);
+  fs::remove_all(work);
+  stats.bytes = html.size();
+  return stats;
+}
+
+}  // namespace snell

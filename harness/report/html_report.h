@@ -1,0 +1,41 @@
+#pragma once
+// `snell report`: one self-contained HTML file (every image and chart
+// embedded, no network) from one or more runs' results: a summary by
+// listing and backend, the comparison matrix of every run and backend, the
+// drivers, and per case the tolerance report (slack per output and its
+// histogram, the worst samples, image errors, masked pixels by reason) with
+// the reference, rendered and heat-map images side by side, and a heat map
+// for every pair of backends that rendered the case.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/case.h"
+#include "runner/case_result.h"
+
+namespace snell {
+
+struct ReportRun {
+  std::string label;
+  std::vector<CaseResult> results;
+};
+
+struct ReportOptions {
+  // The run's --out folder: rendered images (<case>/<backend>.exr, .png),
+  // the reference and the mask. Missing images are left out of the report.
+  std::filesystem::path imagesDir;
+  std::vector<Case> catalog;  // for titles, sources and fail thresholds
+  std::string title;
+};
+
+struct ReportStats {
+  std::size_t cases = 0, histograms = 0, heatMaps = 0, pictures = 0;
+  std::size_t bytes = 0;
+};
+
+// Writes outDir/index.html (charts are drawn in outDir/work, removed after).
+// Throws SetupError when gnuplot is missing or fails.
+ReportStats writeHtmlReport(const std::vector<ReportRun>& runs, const ReportOptions& options,
+                            const std::filesystem::path& outDir);
+
+}  // namespace snell

@@ -1,0 +1,27 @@
+#pragma once
+// SIGINT and SIGTERM while a run is going: the handler only records the
+// signal; the supervisor sees it, stops its workers and returns what
+// finished, so the caller can still write the results and a summary.
+#include <csignal>
+
+namespace snell {
+
+// Installs the handlers for its lifetime (without SA_RESTART, so a blocked
+// poll() returns) and restores the previous ones after.
+class InterruptFlag {
+ public:
+  InterruptFlag();
+  ~InterruptFlag();
+  InterruptFlag(const InterruptFlag&) = delete;
+  InterruptFlag& operator=(const InterruptFlag&) = delete;
+
+  // The signal received, or 0.
+  int signal() const;
+  // What the supervisor polls.
+  const volatile std::sig_atomic_t* flag() const;
+
+ private:
+  struct sigaction previousInt_, previousTerm_;
+};
+
+}  // namespace snell

@@ -1,0 +1,103 @@
+// Two hand-made runs that hold one case of each kind: every category is
+// found, and nothing else is.
+#include "baseline/compare_runs.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+CaseResult result(const std::string& id, const std::string& backend, Status status,
+                  double slack = 0.1, double imageError = -1) {
+  CaseResult r;
+  r.caseId = id;
+  r.backend = backend;
+  r.status = status;
+  VaryingCheck v;
+  v.name = "Refract";
+  v.checked = 10;
+  v.worstSlack = slack;
+  r.varyings.push_back(v);
+  if (imageError >= 0) {
+    ImageComparison c;
+    c.against = "reference";
+    c.maxError = imageError;
+    r.images.push_back(c);
+  }
+  return r;
+}
+
+RunSide side(const std::string& label, std::vector<CaseResult> results, std::string backend = "") {
+  return {label, std::move(backend), std::move(results)};
+}
+
+TEST(CompareRuns, EveryCategory) {
+  const RunSide before =
+      side("a.jsonl", {result("same", "gl", Status::Pass), result("worse", "gl", Status::Pass),
+                       result("crashes", "gl", Status::Fail), result("better", "gl", Status::Fail),
+                       result("enabled", "gl", Status::NotSupported),
+                       result("gone", "gl", Status::Pass), result("slack", "gl", Status::Pass, 0.1),
+                       result("image", "gl", Status::Pass, 0.1, 1e-4),
+                       result("noise", "gl", Status::Pass, 0.001, 1e-9)});
+  const RunSide after =
+      side("b.jsonl", {result("same", "gl", Status::Pass), result("worse", "gl", Status::Fail),
+                       result("crashes", "gl", Status::Crash), result("better", "gl", Status::Pass),
+                       result("enabled", "gl", Status::Pass), result("fresh", "gl", Status::Pass),
+                       result("slack", "gl", Status::Pass, 0.25),
+                       result("image", "gl", Status::Pass, 0.1, 3e-4),
+                       result("noise", "gl", Status::Pass, 0.009, 5e-7)});
+  const RunComparison c = compareRuns(before, after, DriftRule{});
+  ASSERT_EQ(c.regressions.size(), 2u);
+  EXPECT_EQ(c.regressions[0].key, "gl crashes");
+  EXPECT_EQ(c.regressions[1].key, "gl worse");
+  ASSERT_EQ(c.fixes.size(), 1u);
+  EXPECT_EQ(c.fixes[0].key, "gl better");
+  ASSERT_EQ(c.changes.size(), 1u);
+  EXPECT_EQ(c.changes[0].key, "gl enabled");
+  EXPECT_EQ(c.added, (std::vector<std::string>{"gl fresh"}));
+  EXPECT_EQ(c.removed, (std::vector<std::string>{"gl gone"}));
+  // 0.1 -> 0.25 and 1e-4 -> 3e-4 grew more than 2x; "noise" stays under the floors.
+  ASSERT_EQ(c.drift.size(), 2u);
+  EXPECT_EQ(c.drift[0].key, "gl image");
+  EXPECT_EQ(c.drift[0].metric, "image error vs reference");
+  EXPECT_EQ(c.drift[1].key, "gl slack");
+  EXPECT_EQ(c.drift[1].metric, "worst slack");
+  EXPECT_EQ(c.unchanged, 4u);  // same, slack, image, noise
+
+  // A larger factor keeps the image drift only.
+  DriftRule loose;
+  loose.factor = 2.8;
+  EXPECT_EQ(compareRuns(before, after, loose).drift.size(), 1u);
+
+  std::ostringstream text;
+  printComparison(text, c, DriftRule{});
+  EXPECT_NE(text.str().find("2 regressions, 1 fixes, 1 changes, 1 new, 1 removed, 2 drifted"),
+            std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("regression  gl worse: Pass -> Fail"), std::string::npos) << text.str();
+  const nlohmann::json json = comparisonToJson(c);
+  EXPECT_EQ(json["regressions"].size(), 2u);
+  EXPECT_EQ(json["new"][0], "gl fresh");
+  EXPECT_EQ(json["drift"][1]["to"], 0.25);
+}
+
+TEST(CompareRuns, BackendHalvesCompareCaseByCase) {
+  const RunSide run = side(
+      "r.jsonl", {result("x", "gl", Status::Pass), result("x", "vk", Status::CompatibilityWarning),
+                  result("y", "gl", Status::Pass)});
+  RunSide gl = run, vk = run;
+  gl.backend = "gl";
+  vk.backend = "vk";
+  const RunComparison c = compareRuns(gl, vk, DriftRule{});
+  ASSERT_EQ(c.regressions.size(), 1u);
+  EXPECT_EQ(c.regressions[0].key, "x");
+  EXPECT_EQ(c.removed, (std::vector<std::string>{"y"}));
+  EXPECT_THROW(compareRuns(gl, run, DriftRule{}), UsageError);
+}
+
+}  // namespace
+}  // namespace snell

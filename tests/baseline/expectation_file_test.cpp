@@ -1,0 +1,112 @@
+// Expectation files as Mesa keeps them, with metadata comments; every
+// malformed or expired entry is exit 2 with FILE:LINE.
+#include "baseline/expectation_file.h"
+
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "test_files.h"
+
+namespace snell {
+namespace {
+
+constexpr const char* kToday = "2026-11-25";
+
+std::string usageErrorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ExpectationFile, ReadsFailsFlakesSkipsWithMetadata) {
+  testing::TempDir dir;
+  dir.write("gl-fails.txt",
+            "# softpipe's refract rounds twice\n"
+            "# reason: 13 pixels off at the rim\n"
+            "# link: https://example.org/1\n"
+            "# added: 2026-11-20\n"
+            "# expires: 2027-01-01\n"
+            "orange-book/14.1-fresnel/sphere,Fail\n"
+            "\n"
+            "cs381/refraction/sphere,Timeout\n");
+  dir.write("gl-flakes.txt", "^shadertoy/.*/bubble\n");
+  dir.write("gl-skips.txt", "# too slow\nblog/.*\n");
+  const ExpectationSet set = loadExpectations(dir.path(), {"gl", "vk"}, kToday);
+  const Expectations& gl = set.of("gl");
+  ASSERT_EQ(gl.fails.size(), 2u);
+  EXPECT_EQ(gl.fails[0].caseId, "orange-book/14.1-fresnel/sphere");
+  EXPECT_EQ(gl.fails[0].status, Status::Fail);
+  EXPECT_EQ(gl.fails[0].metadata.reason, "13 pixels off at the rim");
+  EXPECT_EQ(gl.fails[0].metadata.link, "https://example.org/1");
+  EXPECT_EQ(gl.fails[0].metadata.expires, "2027-01-01");
+  EXPECT_EQ(gl.fails[0].place.line, 6);
+  // The blank line ends the metadata: the second entry has none.
+  EXPECT_EQ(gl.fails[1].metadata.reason, "");
+  EXPECT_EQ(gl.fails[1].status, Status::Timeout);
+  EXPECT_NE(gl.flake("shadertoy/lens/bubble"), nullptr);
+  EXPECT_EQ(gl.flake("shadertoy/lens/sphere"), nullptr);
+  EXPECT_NE(gl.skip("blog/fresnel/sphere"), nullptr);
+  // No vk files: nothing expected of vk.
+  EXPECT_TRUE(set.of("vk").fails.empty());
+  EXPECT_EQ(set.of("vk").skip("blog/fresnel/sphere"), nullptr);
+}
+
+TEST(ExpectationFile, PrefixFileAppliesToEveryBackend) {
+  testing::TempDir dir;
+  const auto fails = dir.write("softpipe-fails.txt", "a/b/c,Fail\n");
+  dir.write("softpipe-skips.txt", "^x/\n");
+  const ExpectationSet set = loadExpectations(fails, {"gl"}, kToday);
+  EXPECT_NE(set.of("gl").knownFailure("a/b/c"), nullptr);
+  EXPECT_NE(set.of("gl").skip("x/y/z"), nullptr);
+}
+
+TEST(ExpectationFile, ExpiredEntryIsAnErrorAtItsLine) {
+  testing::TempDir dir;
+  dir.write("gl-fails.txt", "# reason: waiting for a fix\n# expires: 2026-11-24\na/b/c,Fail\n");
+  const std::string error = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(error.find("gl-fails.txt:3:"), std::string::npos) << error;
+  EXPECT_NE(error.find("expired on 2026-11-24"), std::string::npos) << error;
+  // Expiring today is not expired yet.
+  dir.write("gl-fails.txt", "# expires: 2026-11-25\na/b/c,Fail\n");
+  EXPECT_EQ(usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); }), "");
+}
+
+TEST(ExpectationFile, MalformedEntriesNameFileAndLine) {
+  const std::vector<std::pair<std::string, std::string>> bad = {
+      {"gl-fails.txt", "a/b/c\n"},                          // no status
+      {"gl-fails.txt", "a/b/c,Passed\n"},                   // no such status
+      {"gl-fails.txt", "a/b/c,Pass\n"},                     // not a failure
+      {"gl-fails.txt", "a/b/c,Fail\na/b/c,Crash\n"},        // listed twice
+      {"gl-fails.txt", "# expires: 2027-02-30\na,Fail\n"},  // no such date
+      {"gl-fails.txt", "# added: yesterday\na,Fail\n"},
+      {"gl-flakes.txt", "a/(b\n"},                  // not a regex
+      {"gl-skips.txt", "x\n# reason: dangling\n"},  // metadata of no entry
+  };
+  for (const auto& [name, text] : bad) {
+    testing::TempDir dir;
+    dir.write(name, text);
+    const std::string error = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+    EXPECT_NE(error.find(name + ":"), std::string::npos) << text << " -> " << error;
+  }
+}
+
+TEST(ExpectationFile, SourceThatIsNeitherFolderNorPrefixFileIsAnError) {
+  testing::TempDir dir;
+  const auto other = dir.write("fails.csv", "a,Fail\n");
+  EXPECT_NE(usageErrorOf([&] { loadExpectations(other, {"gl"}, kToday); }), "");
+  EXPECT_NE(usageErrorOf([&] { loadExpectations(dir.path() / "none-fails.txt", {"gl"}, kToday); }),
+            "");
+}
+
+TEST(ExpectationFile, TodayIsADate) {
+  const std::string today = todayUtc();
+  ASSERT_EQ(today.size(), 10u);
+  EXPECT_EQ(today[4], '-');
+  EXPECT_GE(today, "2026-01-01");
+}
+
+}  // namespace
+}  // namespace snell

@@ -1,0 +1,55 @@
+// Results files read back: records round-trip, a torn last line (a run
+// killed mid-write) is dropped, anything else malformed is FILE:LINE.
+#include "baseline/results_file.h"
+
+#include <gtest/gtest.h>
+
+#include "core/errors.h"
+#include "test_files.h"
+
+namespace snell {
+namespace {
+
+CaseResult result(const std::string& id, Status status) {
+  CaseResult r;
+  r.caseId = id;
+  r.backend = "vk";
+  r.status = status;
+  r.reruns = {Status::Fail, Status::Pass};
+  return r;
+}
+
+TEST(ResultsFile, RoundTripsWithRerunsAndIncompleteMark) {
+  testing::TempDir dir;
+  const std::string text =
+      toResultsJsonLines({result("a/b/c", Status::Fail), result("d/e/f", Status::Pass)}, true);
+  EXPECT_NE(text.find("\"incomplete\":true"), std::string::npos);
+  const auto read = readResultsFile(dir.write("r.jsonl", text));
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0].caseId, "a/b/c");
+  EXPECT_EQ(read[0].status, Status::Fail);
+  EXPECT_EQ(read[0].reruns, (std::vector<Status>{Status::Fail, Status::Pass}));
+  EXPECT_EQ(resultKey(read[1]), "vk d/e/f");
+}
+
+TEST(ResultsFile, TornLastLineIsDropped) {
+  testing::TempDir dir;
+  std::string text = toResultsJsonLines({result("a/b/c", Status::Pass)});
+  text += text.substr(0, 40);  // no newline: the write was cut off
+  EXPECT_EQ(readResultsFile(dir.write("r.jsonl.partial", text)).size(), 1u);
+}
+
+TEST(ResultsFile, MalformedRecordIsUsageErrorAtItsLine) {
+  testing::TempDir dir;
+  const std::string good = toResultsJsonLines({result("a/b/c", Status::Pass)});
+  try {
+    readResultsFile(dir.write("r.jsonl", good + "{\"case\": 1}\n" + good));
+    FAIL() << "accepted a malformed record";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("r.jsonl:2:"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(readResultsFile(dir.path() / "missing.jsonl"), UsageError);
+}
+
+}  // namespace
+}  // namespace snell

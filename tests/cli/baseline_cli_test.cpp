@@ -1,0 +1,254 @@
+// `snell run` with expectation files, reruns, results.csv, shards and
+// `snell merge`, interruption and --resume, as a user runs them.
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <thread>
+
+#include "snell_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using snell::testing::Outcome;
+using snell::testing::readText;
+using snell::testing::spawnSnell;
+
+Outcome snell(const std::string& args) { return snell::testing::runSnell(args); }
+
+std::vector<nlohmann::json> records(const fs::path& path) {
+  std::vector<nlohmann::json> out;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+class Scratch {
+ public:
+  Scratch()
+      : dir_(fs::temp_directory_path() / fmt::format("snell-baseline-cli-{}-{}", getpid(), n_++)) {
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  ~Scratch() { fs::remove_all(dir_); }
+  fs::path operator/(const std::string& name) const { return dir_ / name; }
+  const fs::path& path() const { return dir_; }
+
+ private:
+  static inline int n_ = 0;
+  fs::path dir_;
+};
+
+// Listing 14.1 with Eta changed in the shader only: its cases Fail on the
+// vectors (the oracle reads the manifest's 0.66).
+fs::path brokenFresnel(const Scratch& scratch) {
+  const fs::path dir = scratch / "shaders";
+  fs::create_directories(dir);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", dir / "fresnel");
+  std::string text = readText(dir / "fresnel" / "fresnel.vert");
+  const std::string from = "const float Eta = 0.66;";
+  text.replace(text.find(from), from.size(), "const float Eta = 0.67;");
+  std::ofstream(dir / "fresnel" / "fresnel.vert", std::ios::trunc) << text;
+  return dir;
+}
+
+TEST(BaselineCli, KnownFailuresPassTheGateAndTheRestIsReported) {
+  Scratch scratch;
+  const fs::path shaders = brokenFresnel(scratch);
+  const std::string common = fmt::format("run --backend gl -j 2 --shaders {} --out {}",
+                                         shaders.string(), (scratch / "out").string());
+  // No expectations: the failure fails the gate, after one rerun.
+  const Outcome plain = snell(
+      fmt::format("{} --filter '*/sweep' --json {}", common, (scratch / "plain.jsonl").string()));
+  EXPECT_EQ(plain.code, 1) << plain.out;
+  const auto first = records(scratch / "plain.jsonl");
+  ASSERT_EQ(first.size(), 1u);
+  EXPECT_EQ(first[0]["status"], "Fail");
+  EXPECT_EQ(first[0]["reruns"], nlohmann::json::array({"Fail"}));
+  EXPECT_EQ(readText(scratch / "plain.csv").rfind("gl/orange-book/14.1-fresnel/sweep,Fail,", 0), 0u)
+      << readText(scratch / "plain.csv");
+
+  // Listed as a known failure, with an entry that no longer fails and one
+  // for a case that did not run: exit 0, both reported.
+  fs::create_directories(scratch / "expect");
+  std::ofstream(scratch / "expect" / "gl-fails.txt")
+      << "# reason: Eta edited in the shader\n# expires: 2999-01-01\n"
+         "orange-book/14.1-fresnel/sweep,Fail\n"
+         "orange-book/14.1-fresnel/sphere,Fail\n";
+  const Outcome expected =
+      snell(fmt::format("{} --filter 'orange-book/14.1-fresnel/s*' --json {} --junit {} "
+                        "--expectations {}",
+                        common, (scratch / "expected.jsonl").string(),
+                        (scratch / "expected.xml").string(), (scratch / "expect").string()));
+  // The sphere case also fails (same edit): it is listed, so only the
+  // torus is absent.
+  EXPECT_EQ(expected.code, 0) << expected.out;
+  EXPECT_NE(expected.out.find("0 unexpected failures, 2 expected failures"), std::string::npos)
+      << expected.out;
+  const std::string csv = readText(scratch / "expected.csv");
+  EXPECT_NE(csv.find("gl/orange-book/14.1-fresnel/sweep,ExpectedFail,"), std::string::npos) << csv;
+  EXPECT_NE(readText(scratch / "expected.xml").find("<skipped message=\"Fail: expected failure"),
+            std::string::npos);
+
+  // The entry that passes now, for a case that passes: an improvement,
+  // with the line to delete.
+  std::ofstream(scratch / "expect" / "gl-fails.txt", std::ios::trunc)
+      << "orange-book/14.1-fresnel/sweep,Fail\norange-book/14.1-fresnel/torus,Fail\n"
+         "orange-book/14.1-fresnel/gone,Crash\n";
+  const Outcome improved = snell(fmt::format(
+      "run --backend gl -j 2 --filter 'orange-book/14.1-fresnel/*' --out {} --expectations {}",
+      (scratch / "out2").string(), (scratch / "expect").string()));
+  EXPECT_EQ(improved.code, 0) << improved.out;
+  EXPECT_NE(improved.out.find("improvement: gl orange-book/14.1-fresnel/sweep is Pass; delete "),
+            std::string::npos)
+      << improved.out;
+  EXPECT_NE(improved.out.find("gl-fails.txt:1 `orange-book/14.1-fresnel/sweep,Fail`"),
+            std::string::npos)
+      << improved.out;
+  EXPECT_NE(improved.out.find("absent: gl orange-book/14.1-fresnel/gone"), std::string::npos)
+      << improved.out;
+}
+
+TEST(BaselineCli, ExpiredEntryStopsTheRunBeforeAnyDriverLoads) {
+  Scratch scratch;
+  std::ofstream(scratch / "softpipe-fails.txt")
+      << "# reason: waits for a Mesa fix\n# expires: "
+         "2001-01-01\norange-book/14.1-fresnel/sweep,Fail\n";
+  const Outcome o =
+      snell(fmt::format("run --backend gl --filter 'orange-book/14.1-fresnel/*' "
+                        "--expectations {} --json {}",
+                        (scratch / "softpipe-fails.txt").string(), (scratch / "r.jsonl").string()));
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("softpipe-fails.txt:3: this entry expired on 2001-01-01"), std::string::npos)
+      << o.out;
+  EXPECT_FALSE(fs::exists(scratch / "r.jsonl.partial"));
+}
+
+TEST(BaselineCli, SkippedCasesDoNotRun) {
+  Scratch scratch;
+  std::ofstream(scratch / "x-skips.txt") << "# reason: slow here\n/sweep$\n";
+  const Outcome o = snell(fmt::format(
+      "run --backend gl --filter 'orange-book/14.1-fresnel/*' --expectations {} --json {} --out {}",
+      (scratch / "x-skips.txt").string(), (scratch / "r.jsonl").string(),
+      (scratch / "out").string()));
+  EXPECT_EQ(o.code, 0) << o.out;
+  EXPECT_EQ(records(scratch / "r.jsonl").size(), 2u);
+  EXPECT_NE(o.out.find("skipped: gl orange-book/14.1-fresnel/sweep"), std::string::npos) << o.out;
+}
+
+// Results with the timings taken out: what must match between runs.
+std::vector<nlohmann::json> withoutTimings(std::vector<nlohmann::json> results) {
+  for (nlohmann::json& r : results)
+    for (const char* key : {"seconds", "backend_seconds", "oracle_seconds"}) r.erase(key);
+  return results;
+}
+
+TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
+  Scratch scratch;
+  const std::string filter = "--filter 'orange-book/14.1-fresnel/*' -j 2";
+  const Outcome whole =
+      snell(fmt::format("run {} --out {} --json {}", filter, (scratch / "out-whole").string(),
+                        (scratch / "whole.jsonl").string()));
+  ASSERT_EQ(whole.code, 0) << whole.out;
+  // OpenGL in two shards, Vulkan in a job of its own: the OpenGL-Vulkan
+  // image comparison can only happen in the merge.
+  const std::string out = (scratch / "out-split").string();
+  const std::vector<std::pair<std::string, std::string>> jobs = {
+      {"--backend gl --shard 1/2", "job1.jsonl"},
+      {"--backend gl --shard 2/2", "job2.jsonl"},
+      {"--backend vk", "jobv.jsonl"}};
+  for (const auto& [job, file] : jobs) {
+    const Outcome o = snell(
+        fmt::format("run {} {} --out {} --json {}", filter, job, out, (scratch / file).string()));
+    ASSERT_EQ(o.code, 0) << job << "\n" << o.out;
+  }
+  EXPECT_EQ(records(scratch / "job1.jsonl").size(), 2u);  // cases 1 and 3
+  EXPECT_EQ(records(scratch / "job2.jsonl").size(), 1u);
+  const Outcome merged = snell(
+      fmt::format("merge {} {} {} --out {} --json {} --junit {}", (scratch / "job2.jsonl").string(),
+                  (scratch / "jobv.jsonl").string(), (scratch / "job1.jsonl").string(), out,
+                  (scratch / "merged.jsonl").string(), (scratch / "merged.xml").string()));
+  ASSERT_EQ(merged.code, 0) << merged.out;
+  const auto a = withoutTimings(records(scratch / "whole.jsonl"));
+  const auto b = withoutTimings(records(scratch / "merged.jsonl"));
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k], b[k]) << k;
+  EXPECT_TRUE(fs::exists(scratch / "merged.csv"));
+  EXPECT_TRUE(fs::exists(scratch / "merged.xml"));
+  // Overlapping shards are refused.
+  const Outcome overlap =
+      snell(fmt::format("merge {} {} --json {}", (scratch / "job1.jsonl").string(),
+                        (scratch / "job1.jsonl").string(), (scratch / "bad.jsonl").string()));
+  EXPECT_EQ(overlap.code, 2) << overlap.out;
+}
+
+std::size_t lineCount(const fs::path& path) {
+  std::ifstream in(path);
+  std::size_t n = 0;
+  for (std::string line; std::getline(in, line);) n += line.empty() ? 0 : 1;
+  return n;
+}
+
+// SIGTERM in the middle of a run: the workers stop, what finished is
+// written and marked incomplete, exit 130; --resume runs only the rest.
+TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
+  Scratch scratch;
+  const fs::path shaders = scratch / "shaders";
+  fs::create_directories(shaders);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  fs::copy(SNELL_SOURCE_ROOT "/tests/faults/endless-loop", shaders / "endless-loop");
+  const fs::path json = scratch / "r.jsonl";
+  // Two workers: one hangs in the endless listing, the other finishes the
+  // three Fresnel cases.
+  const pid_t pid =
+      spawnSnell({"run", "--backend", "gl", "-j", "2", "--timeout", "60", "--reruns", "0",
+                  "--shaders", shaders.string(), "--out", (scratch / "out").string(), "--json",
+                  json.string(), "--junit", (scratch / "r.xml").string()});
+  fs::path partial = json;
+  partial += ".partial";
+  for (int k = 0; k < 600 && lineCount(partial) < 3; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_EQ(lineCount(partial), 3u);
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const auto finished = records(json);
+  ASSERT_EQ(finished.size(), 3u);
+  for (const auto& r : finished) {
+    EXPECT_EQ(r["status"], "Pass") << r["case"];
+    EXPECT_EQ(r["incomplete"], true);
+  }
+  EXPECT_NE(readText(scratch / "r.xml").find("incomplete: interrupted by SIGTERM after 3 of 4"),
+            std::string::npos)
+      << readText(scratch / "r.xml");
+
+  // The endless case alone runs on resume, with a short limit.
+  const Outcome resumed = snell(fmt::format(
+      "run --backend gl --timeout 1 --reruns 0 --shaders {} --out {} --resume {} --json {}",
+      shaders.string(), (scratch / "out").string(), json.string(),
+      (scratch / "all.jsonl").string()));
+  EXPECT_EQ(resumed.code, 1) << resumed.out;
+  EXPECT_NE(resumed.out.find("[4/4] gl faults/endless-loop/sweep Timeout"), std::string::npos)
+      << resumed.out;
+  EXPECT_EQ(resumed.out.find("[1/4]"), std::string::npos) << resumed.out;
+  const auto all = records(scratch / "all.jsonl");
+  ASSERT_EQ(all.size(), 4u);
+  for (const auto& r : all) EXPECT_FALSE(r.contains("incomplete"));
+}
+
+}  // namespace

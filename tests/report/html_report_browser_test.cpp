@@ -1,0 +1,182 @@
+// `snell report` on a run with a few-pixel image failure, opened in
+// headless chromium with every host unreachable: the page renders (the
+// screenshot is not blank), every image is embedded and decodes, and the
+// failure is named and circled. The screenshot is kept beside the test.
+#include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "compare/image_io.h"
+#include "core/image.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kCase = "orange-book/14.1-fresnel/sphere";  // fail threshold 0.004
+
+std::pair<int, std::string> shell(const std::string& command) {
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) out.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json record(const std::string& backend, const std::string& status,
+                      std::size_t failedPixels) {
+  const nlohmann::json driver = {{"api", backend == "gl" ? "OpenGL" : "Vulkan"},
+                                 {"api_version", "4.5"},
+                                 {"renderer", backend == "gl" ? "softpipe" : "llvmpipe"},
+                                 {"driver_version", "Mesa 22.3.6"},
+                                 {"device_type", "cpu"}};
+  const nlohmann::json varying = {{"name", "Refract"},
+                                  {"checked", 3000},
+                                  {"undefined", 12},
+                                  {"failed", 0},
+                                  {"worst_slack", 0.73},
+                                  {"worst_vertex", 17},
+                                  {"slack_histogram", {900, 1200, 500, 300, 80, 20, 0, 0}},
+                                  {"first_failures", nlohmann::json::array()}};
+  const nlohmann::json image = {{"against", "reference"},
+                                {"verdict", failedPixels ? "fail" : "pass"},
+                                {"max_error", failedPixels ? 0.02 : 0.0005},
+                                {"mean_error", 1e-5},
+                                {"rms_error", 1e-4},
+                                {"psnr", 80.0},
+                                {"max_x", 20},
+                                {"max_y", 30},
+                                {"compared", 4000},
+                                {"failed", failedPixels},
+                                {"warned", 0},
+                                {"masked", {{"Silhouette", 96}}},
+                                {"problem", ""}};
+  return {{"case", kCase},
+          {"backend", backend},
+          {"status", status},
+          {"message", failedPixels ? "13 pixels over 0.004 against the reference" : ""},
+          {"title", "Fresnel reflection and refraction"},
+          {"source", {{"file", "000.txt"}, {"where", "Listing 14.1"}}},
+          {"driver", driver},
+          {"vertices", 1000},
+          {"varyings", {varying}},
+          {"images", {image}},
+          {"compile_log", ""},
+          {"seconds", 0.5},
+          {"backend_seconds", 0.3},
+          {"oracle_seconds", 0.1}};
+}
+
+// A 64x64 scene: a gradient; the "gl" render is off by 0.02 on 13 pixels
+// (over the 0.004 threshold), "vk" by 0.0005 everywhere.
+void writeImages(const fs::path& dir) {
+  fs::create_directories(dir);
+  snell::Image reference(64, 64), gl(64, 64), vk(64, 64), mask(64, 64);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 4; ++c) {
+        const float v = c == 3 ? 1.0f : (x + y * (c + 1)) / 256.0f;
+        reference.at(x, y)[c] = v;
+        gl.at(x, y)[c] = v;
+        vk.at(x, y)[c] = c == 3 ? v : v + 0.0005f;
+      }
+  for (int k = 0; k < 13; ++k) gl.at(10 + 3 * k, 40)[1] += 0.02f;
+  for (int x = 0; x < 64; ++x) mask.at(x, 0)[0] = 1;  // one row masked: grey
+  snell::writeImageAtomically(dir / "reference.exr", reference);
+  snell::writeImageAtomically(dir / "reference.png", reference);
+  snell::writeImageAtomically(dir / "gl.exr", gl);
+  snell::writeImageAtomically(dir / "gl.png", gl);
+  snell::writeImageAtomically(dir / "vk.exr", vk);
+  snell::writeImageAtomically(dir / "vk.png", vk);
+  snell::writeImageAtomically(dir / "mask.exr", mask);
+}
+
+TEST(HtmlReport, RendersInHeadlessChromiumWithEveryImageEmbedded) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-test-{}", getpid());
+  fs::remove_all(dir);
+  writeImages(dir / "images" / kCase);
+  {
+    std::ofstream out(dir / "results.jsonl");
+    out << record("gl", "Fail", 13).dump() << "\n" << record("vk", "Pass", 0).dump() << "\n";
+  }
+  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                                             (dir / "results.jsonl").string(),
+                                             (dir / "html").string(), (dir / "images").string()));
+  ASSERT_EQ(code, 0) << out;
+  const std::string html = readText(dir / "html" / "index.html");
+  // The failure is named, with its count, in the heat map's caption.
+  EXPECT_NE(html.find("gl against the reference: 13 pixels over 0.004"), std::string::npos);
+  EXPECT_NE(html.find("vk against gl: 13 pixels over 0.004"), std::string::npos);
+  EXPECT_NE(html.find("softpipe"), std::string::npos);
+  // Every image is embedded and decodes: PNGs start with the PNG signature,
+  // charts are SVG.
+  const std::regex img("<img[^>]*src=\"([^\"]*)\"");
+  std::size_t images = 0;
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), img); it != std::sregex_iterator();
+       ++it) {
+    const std::string src = (*it)[1];
+    ++images;
+    ASSERT_EQ(src.rfind("data:", 0), 0u) << src.substr(0, 80);
+    if (src.rfind("data:image/png;base64,", 0) == 0) {
+      EXPECT_EQ(src.substr(22, 8), "iVBORw0K") << "not a PNG";
+    } else {
+      ASSERT_EQ(src.rfind("data:image/svg+xml;base64,", 0), 0u) << src.substr(0, 80);
+      EXPECT_EQ(src.find("<svg"), std::string::npos);
+    }
+  }
+  // Histograms for gl and vk; reference, two renders, two heat maps against
+  // it, one backend pair.
+  EXPECT_EQ(images, 2u + 6u);
+  EXPECT_EQ(html.find("http://"), std::string::npos);
+  EXPECT_EQ(html.find("https://"), std::string::npos);
+
+  // A real browser, with every host unreachable.
+  const fs::path screenshot = fs::path(SNELL_SCREENSHOT_DIR) / "report-screenshot.png";
+  fs::remove(screenshot);
+  const auto [browserCode, browserOut] = shell(fmt::format(
+      "chromium --headless --no-sandbox --disable-gpu --no-first-run --user-data-dir={} "
+      "--host-resolver-rules='MAP * ~NOTFOUND' --hide-scrollbars --window-size=1280,2400 "
+      "--screenshot={} file://{}",
+      (dir / "profile").string(), screenshot.string(), (dir / "html" / "index.html").string()));
+  ASSERT_TRUE(fs::exists(screenshot))
+      << "chromium (Debian package chromium, ci/packages.txt): " << browserCode << "\n"
+      << browserOut;
+  // The screenshot may have 3 or 4 channels.
+  auto input = OIIO::ImageInput::open(screenshot.string());
+  ASSERT_TRUE(input) << OIIO::geterror();
+  const OIIO::ImageSpec& spec = input->spec();
+  const int channels = spec.nchannels;
+  std::vector<float> shot(static_cast<std::size_t>(spec.width) * spec.height * channels);
+  ASSERT_TRUE(input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, shot.data()));
+  // Not blank: dark text on the light page, and colour (statuses, charts,
+  // heat maps).
+  std::size_t dark = 0, coloured = 0;
+  const std::size_t pixels = shot.size() / channels;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const float* px = &shot[p * channels];
+    if (px[0] + px[1] + px[2] < 0.6f) ++dark;
+    if (std::abs(px[0] - px[1]) > 0.1f || std::abs(px[1] - px[2]) > 0.1f) ++coloured;
+  }
+  EXPECT_GT(dark, pixels / 200) << "no text or images drawn";
+  EXPECT_GT(coloured, pixels / 100) << "no status colours, charts or heat maps drawn";
+  fs::remove_all(dir);
+}
+
+}  // namespace
