@@ -34,12 +34,25 @@ T length(const vec<T, Size>& x) {
   return inherited(sqrt(dot(x, x)));
 }
 
-// GLSL: x / length(x); Vulkan: x * inversesqrt(dot(x, x)).
+// A number type that models one implementation's choices (the tests'
+// adversarial machine) says which of several legal formulas a call uses.
+template <class T>
+concept ChoosesFormula = requires { T::chooseFormula(2); };
+
+// GLSL: x / length(x). Vulkan's table gives x * inversesqrt(dot(x, x)),
+// and a SPIR-V module compiled from GLSL may equally carry GLSL's formula,
+// which is no less accurate: under Vulkan both are allowed.
 template <class T, int Size>
 vec<T, Size> normalize(const vec<T, Size>& x) {
-  if (currentPrecisionRules() == PrecisionRules::Vulkan)
-    return inherited(x * inversesqrt(dot(x, x)));
-  return x / length(x);
+  if (currentPrecisionRules() != PrecisionRules::Vulkan) return x / length(x);
+  if constexpr (std::same_as<T, Interval>) {
+    return inherited(x * inversesqrt(dot(x, x)));  // AUDIT-BEFORE
+  } else if constexpr (ChoosesFormula<T>) {
+    if (T::chooseFormula(2) == 0) return x / length(x);
+    return x * inversesqrt(dot(x, x));
+  } else {
+    return x * inversesqrt(dot(x, x));
+  }
 }
 
 template <class T, int Size>
@@ -71,6 +84,8 @@ T mix(const T& x, const T& y, const T& a) {
   if constexpr (std::same_as<T, Interval>) {
     if (currentPrecisionRules() == PrecisionRules::Glsl) return hull(written, x + (y - x) * a);
     return inherited(written);
+  } else if constexpr (ChoosesFormula<T>) {
+    return T::chooseFormula(2) == 0 ? written : x + (y - x) * a;
   } else {
     return written;
   }
