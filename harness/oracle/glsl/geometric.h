@@ -65,10 +65,21 @@ vec<T, Size> reflect(const vec<T, Size>& I, const vec<T, Size>& N) {
 // else return eta * I - (eta * dot(N, I) + sqrt(k)) * N;
 // sqrt takes max(k, 0): where k may be either side of 0 the formula branch
 // only ever sees the k >= 0 part.
+template <class T>
+T refractK(const T& eta, const T& d) {
+  return lit<T>(1.0) - eta * eta * (lit<T>(1.0) - d * d);
+}
+// The reference value in double-double: near grazing with eta near 1, k is
+// about d^2 and would cancel in double.
+inline double refractK(const double& eta, const double& d) {
+  const DoubleDouble one{1.0, 0.0};
+  return toDouble(one - twoProduct(eta, eta) * (one - twoProduct(d, d)));
+}
+
 template <class T, int Size>
 vec<T, Size> refract(const vec<T, Size>& I, const vec<T, Size>& N, const T& eta) {
   const T d = dot(N, I);
-  const T k = lit<T>(1.0) - eta * eta * (lit<T>(1.0) - d * d);
+  const T k = refractK(eta, d);
   return branch(
       k < lit<T>(0.0), [&] { return splat<T, Size>(lit<T>(0.0)); },
       [&] { return inherited(eta * I - (eta * d + sqrt(max(k, lit<T>(0.0)))) * N); });

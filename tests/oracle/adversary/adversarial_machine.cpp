@@ -15,6 +15,7 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr double kDistributionTerms = 64;
 
 struct Node {
   enum class Op : std::uint8_t { Leaf, Add, Mul, Neg };
@@ -25,6 +26,7 @@ struct Node {
   float value = 0.0f;   // Leaf
   float memo = 0.0f;    // the value computed once, when shared values are kept
   double folded = 0.0;  // a constant expression evaluated in double from its decimals
+  double terms = 1.0;   // monomials in the full expansion
 };
 
 struct Factor {
@@ -246,8 +248,11 @@ Terms expand(int id) {
     default: {
       Terms l = expand(n.a);
       Terms r = expand(n.b);
+      // Within the oracle's budget, counted on the full expansion (as the
+      // oracle counts, an exact zero aside), whatever was expanded here.
       const bool distribute = tState.rules == PrecisionRules::Vulkan &&
-                              l.size() * r.size() <= 64 && percent(tState.distributePercent);
+                              nodeAt(n.a).terms * nodeAt(n.b).terms <= kDistributionTerms &&
+                              percent(tState.distributePercent);
       if (!distribute) {
         if (l.size() > 1) l = {single(materialize(n.a))};
         if (r.size() > 1) r = {single(materialize(n.b))};
@@ -367,6 +372,8 @@ Adv binary(Node::Op op, const Adv& a, const Adv& b) {
   n.constant = (a.node < 0 || na.constant) && (b.node < 0 || nb.constant);
   const double fa = a.node < 0 ? 0.0 : na.folded, fb = b.node < 0 ? 0.0 : nb.folded;
   n.folded = op == Node::Op::Add ? fa + fb : fa * fb;
+  const double ta = nodeAt(n.a).terms, tb = nodeAt(n.b).terms;
+  n.terms = std::min(op == Node::Op::Add ? ta + tb : ta * tb, 1e9);
   Adv r;
   r.node = add(n);
   return r;
@@ -480,6 +487,7 @@ Adv operator-(const Adv& a) {
   const Node inner = nodeAt(n.a);
   n.constant = inner.constant;
   n.folded = -inner.folded;
+  n.terms = inner.terms;
   Adv r;
   r.node = add(n);
   return r;

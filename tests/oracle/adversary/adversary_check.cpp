@@ -10,22 +10,8 @@
 #include "core/legacy_builtins.h"
 #include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
-#include "oracle/listings/blog_chromatic.h"
-#include "oracle/listings/blog_diffraction.h"
-#include "oracle/listings/blog_fresnel.h"
-#include "oracle/listings/cg_refraction.h"
-#include "oracle/listings/cg_refraction_builtin.h"
-#include "oracle/listings/cg_refraction_decal.h"
-#include "oracle/listings/cs381_chromatic_aberration.h"
-#include "oracle/listings/cs381_glass.h"
-#include "oracle/listings/cs381_refraction.h"
+#include "catalog_shaders.h"
 #include "oracle/listings/interface_visitors.h"
-#include "oracle/listings/orange_book_chromatic.h"
-#include "oracle/listings/orange_book_diffraction.h"
-#include "oracle/listings/orange_book_fresnel.h"
-#include "oracle/listings/shadertoy_bubble.h"
-#include "oracle/listings/shadertoy_lens.h"
-#include "oracle/listings/shadertoy_lens_fresnel.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell::adversary {
@@ -159,32 +145,24 @@ std::vector<float> runOnMachine(const UniformMap& uniforms, const ConstantMap& c
 }
 
 struct MachineListing {
-  const char* name;
+  std::string name;
   MachineRun run;
   bool legacy;  // reads fixed-function state derived from the bound matrices
 };
 
-const MachineListing kListings[] = {
-    {listings::kBlogFresnelName, runOnMachine<listings::BlogFresnel>, true},
-    {listings::kBlogChromaticName, runOnMachine<listings::BlogChromatic>, true},
-    {listings::kBlogDiffractionName, runOnMachine<listings::BlogDiffraction>, true},
-    {listings::kOrangeBookFresnelName, runOnMachine<listings::OrangeBookFresnel>, false},
-    {listings::kOrangeBookChromaticName, runOnMachine<listings::OrangeBookChromatic>, false},
-    {listings::kOrangeBookDiffractionName, runOnMachine<listings::OrangeBookDiffraction>, false},
-    {listings::kCgRefractionName, runOnMachine<listings::CgRefraction>, false},
-    {listings::kCgRefractionBuiltinName, runOnMachine<listings::CgRefractionBuiltin>, false},
-    {listings::kCgRefractionDecalName, runOnMachine<listings::CgRefractionDecal>, false},
-    {listings::kCs381RefractionName, runOnMachine<listings::Cs381Refraction>, false},
-    {listings::kCs381ChromaticAberrationName, runOnMachine<listings::Cs381ChromaticAberration>,
-     false},
-    {listings::kCs381GlassName, runOnMachine<listings::Cs381Glass>, false},
-    {listings::kShadertoyLensName, runOnMachine<listings::ShadertoyLens>, false},
-    {listings::kShadertoyLensFresnelName, runOnMachine<listings::ShadertoyLensFresnel>, false},
-    {listings::kShadertoyBubbleName, runOnMachine<listings::ShadertoyBubble>, false},
-};
+const std::vector<MachineListing>& machineListingTable() {
+  static const std::vector<MachineListing> table = [] {
+    std::vector<MachineListing> all;
+    test::forEachCatalogShader([&]<template <class> class Shader>(const char* name, bool legacy) {
+      all.push_back(MachineListing{name, runOnMachine<Shader>, legacy});
+    });
+    return all;
+  }();
+  return table;
+}
 
 const MachineListing& machineListing(const std::string& name) {
-  for (const MachineListing& l : kListings)
+  for (const MachineListing& l : machineListingTable())
     if (name == l.name) return l;
   throw std::invalid_argument("no machine run for listing oracle " + name);
 }
@@ -314,7 +292,7 @@ void checkFormula(Formula f, std::span<const float> inputs, PrecisionRules rules
 
 std::vector<std::string> machineListings() {
   std::vector<std::string> names;
-  for (const MachineListing& l : kListings) names.emplace_back(l.name);
+  for (const MachineListing& l : machineListingTable()) names.push_back(l.name);
   return names;
 }
 
