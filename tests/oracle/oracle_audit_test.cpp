@@ -26,12 +26,18 @@ TEST(OracleAudit, RefractReproductionsFromTheIssueAreAccepted) {
     float y, z;
   };
   const Case cases[] = {
-      {{"refract", {0.826009452f, -0.141244575f, -0.545672357f},
-        {-0.0228234064f, 0.999095142f, -0.0358879417f}, 1.00999999f},
-       -0.0030770083f, -0.556142867f},
-      {{"refract", {-0.999026656f, -0.038447462f, -0.0216229353f},
-        {0.0144414231f, -0.662896097f, 0.748572111f}, 0.998186648f},
-       -0.00172249973f, -0.0629764721f},
+      {{"refract",
+        {0.826009452f, -0.141244575f, -0.545672357f},
+        {-0.0228234064f, 0.999095142f, -0.0358879417f},
+        1.00999999f},
+       -0.0030770083f,
+       -0.556142867f},
+      {{"refract",
+        {-0.999026656f, -0.038447462f, -0.0216229353f},
+        {0.0144414231f, -0.662896097f, 0.748572111f},
+        0.998186648f},
+       -0.00172249973f,
+       -0.0629764721f},
   };
   for (PrecisionRules rules : kRules)
     for (const Case& c : cases) {
@@ -159,7 +165,8 @@ TEST(OracleAudit, SqrtOfARangeReachingZeroKeepsATightErrorBound) {
 TEST(OracleAudit, VulkanDistributivityOfALargeProductIsCapped) {
   const auto width = [](PrecisionRules rules) {
     const UsePrecisionRules use(rules);
-    const Interval a = Interval::point(0.3f), b = Interval::point(0.7f), c = Interval::point(-0.45f);
+    const Interval a = Interval::point(0.3f), b = Interval::point(0.7f),
+                   c = Interval::point(-0.45f);
     Interval product = Interval::point(1.0f);
     for (int k = 0; k < 6; ++k) {
       const Interval sum = a * b + b * c + c * a + Interval::literal(0.5);

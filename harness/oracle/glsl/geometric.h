@@ -37,7 +37,9 @@ T length(const vec<T, Size>& x) {
 // A number type that models one implementation's choices (the tests'
 // adversarial machine) says which of several legal formulas a call uses.
 template <class T>
-concept ChoosesFormula = requires { T::chooseFormula(2); };
+concept ChoosesFormula = requires {
+  T::chooseFormula(2);
+};
 
 // GLSL: x / length(x). Vulkan's table gives x * inversesqrt(dot(x, x)),
 // and a SPIR-V module compiled from GLSL may equally carry GLSL's formula,
@@ -60,11 +62,7 @@ vec<T, Size> reflect(const vec<T, Size>& I, const vec<T, Size>& N) {
   return inherited(I - lit<T>(2.0) * dot(N, I) * N);
 }
 
-// k = 1.0 - eta * eta * (1.0 - dot(N, I) * dot(N, I));
-// if (k < 0.0) return genType(0.0);
-// else return eta * I - (eta * dot(N, I) + sqrt(k)) * N;
-// sqrt takes max(k, 0): where k may be either side of 0 the formula branch
-// only ever sees the k >= 0 part.
+// refract()'s k = 1.0 - eta * eta * (1.0 - d * d).
 template <class T>
 T refractK(const T& eta, const T& d) {
   return lit<T>(1.0) - eta * eta * (lit<T>(1.0) - d * d);
@@ -76,6 +74,11 @@ inline double refractK(const double& eta, const double& d) {
   return toDouble(one - twoProduct(eta, eta) * (one - twoProduct(d, d)));
 }
 
+// k = 1.0 - eta * eta * (1.0 - dot(N, I) * dot(N, I));
+// if (k < 0.0) return genType(0.0);
+// else return eta * I - (eta * dot(N, I) + sqrt(k)) * N;
+// sqrt takes max(k, 0): where k may be either side of 0 the formula branch
+// only ever sees the k >= 0 part.
 template <class T, int Size>
 vec<T, Size> refract(const vec<T, Size>& I, const vec<T, Size>& N, const T& eta) {
   const T d = dot(N, I);

@@ -55,11 +55,11 @@ struct State {
   std::uint64_t rng = 1;
   PrecisionRules rules = PrecisionRules::Glsl;
   Rounding rounding = Rounding::AnyNeighbour;
-  int flushPercent = 0;     // chance that a denormal operand or result becomes 0
-  int foldPercent = 0;      // chance that a constant expression is folded
-  int fusePercent = 0;      // chance that a product is fused into its add
+  int flushPercent = 0;       // chance that a denormal operand or result becomes 0
+  int foldPercent = 0;        // chance that a constant expression is folded
+  int fusePercent = 0;        // chance that a product is fused into its add
   int distributePercent = 0;  // Vulkan: chance that a product of sums is distributed
-  bool keepShared = false;  // compute a shared subexpression once
+  bool keepShared = false;    // compute a shared subexpression once
 };
 
 thread_local State tState;
@@ -431,15 +431,13 @@ float log2Of(float x) {
 float exp2Of(float x) {
   x = maybeFlush(x);
   if (std::isnan(x)) return kNaN;
-  return pickWithinUlps(std::exp2(static_cast<double>(x)), 3.0 + 2.0 * std::fabs(x),
-                        kLibmRelative);
+  return pickWithinUlps(std::exp2(static_cast<double>(x)), 3.0 + 2.0 * std::fabs(x), kLibmRelative);
 }
 
 float expOf(float x) {
   x = maybeFlush(x);
   if (std::isnan(x)) return kNaN;
-  return pickWithinUlps(std::exp(static_cast<double>(x)), 3.0 + 2.0 * std::fabs(x),
-                        kLibmRelative);
+  return pickWithinUlps(std::exp(static_cast<double>(x)), 3.0 + 2.0 * std::fabs(x), kLibmRelative);
 }
 
 double doubleInverseSqrt(double x) { return 1.0 / std::sqrt(x); }

@@ -7,10 +7,10 @@
 #include <stdexcept>
 
 #include "adversary/adversarial_machine.h"
+#include "catalog_shaders.h"
 #include "core/legacy_builtins.h"
 #include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
-#include "catalog_shaders.h"
 #include "oracle/listings/interface_visitors.h"
 #include "oracle/vertex_oracle.h"
 
@@ -120,7 +120,8 @@ std::string reproduction(Formula f, std::span<const float> in, PrecisionRules ru
 
 void record(Tally& tally, std::string message) {
   ++tally.escapes;
-  if (tally.firstEscapes.size() < Tally::kEscapesKept) tally.firstEscapes.push_back(std::move(message));
+  if (tally.firstEscapes.size() < Tally::kEscapesKept)
+    tally.firstEscapes.push_back(std::move(message));
 }
 
 // One catalog listing run on the machine.
@@ -226,42 +227,66 @@ void Tally::add(const Tally& other) {
 
 const char* formulaName(Formula f) {
   switch (f) {
-    case Formula::Reflect: return "reflect";
-    case Formula::Refract: return "refract";
-    case Formula::Normalize: return "normalize";
-    case Formula::Length: return "length";
-    case Formula::Dot: return "dot";
-    case Formula::Pow: return "pow";
-    case Formula::Exp2: return "exp2";
-    case Formula::Log2: return "log2";
-    case Formula::Sqrt: return "sqrt";
-    case Formula::InverseSqrt: return "inversesqrt";
-    case Formula::Mix: return "mix";
-    case Formula::Clamp: return "clamp";
-    case Formula::Divide: return "divide";
-    case Formula::MatrixVector: return "mat4*vec4";
-    case Formula::FresnelRatio: return "fresnel-ratio";
+    case Formula::Reflect:
+      return "reflect";
+    case Formula::Refract:
+      return "refract";
+    case Formula::Normalize:
+      return "normalize";
+    case Formula::Length:
+      return "length";
+    case Formula::Dot:
+      return "dot";
+    case Formula::Pow:
+      return "pow";
+    case Formula::Exp2:
+      return "exp2";
+    case Formula::Log2:
+      return "log2";
+    case Formula::Sqrt:
+      return "sqrt";
+    case Formula::InverseSqrt:
+      return "inversesqrt";
+    case Formula::Mix:
+      return "mix";
+    case Formula::Clamp:
+      return "clamp";
+    case Formula::Divide:
+      return "divide";
+    case Formula::MatrixVector:
+      return "mat4*vec4";
+    case Formula::FresnelRatio:
+      return "fresnel-ratio";
   }
   return "?";
 }
 
 int formulaInputs(Formula f) {
   switch (f) {
-    case Formula::Reflect: return 6;
-    case Formula::Refract: return 7;
+    case Formula::Reflect:
+      return 6;
+    case Formula::Refract:
+      return 7;
     case Formula::Normalize:
-    case Formula::Length: return 3;
-    case Formula::Dot: return 8;
+    case Formula::Length:
+      return 3;
+    case Formula::Dot:
+      return 8;
     case Formula::Pow:
-    case Formula::Divide: return 2;
+    case Formula::Divide:
+      return 2;
     case Formula::Exp2:
     case Formula::Log2:
     case Formula::Sqrt:
-    case Formula::InverseSqrt: return 1;
+    case Formula::InverseSqrt:
+      return 1;
     case Formula::Mix:
-    case Formula::FresnelRatio: return 7;
-    case Formula::Clamp: return 3;
-    case Formula::MatrixVector: return 20;
+    case Formula::FresnelRatio:
+      return 7;
+    case Formula::Clamp:
+      return 3;
+    case Formula::MatrixVector:
+      return 20;
   }
   return 0;
 }
@@ -283,10 +308,10 @@ void checkFormula(Formula f, std::span<const float> inputs, PrecisionRules rules
     ++tally.evaluations;
     if (std::any_of(ways.begin(), ways.end(), [&](const auto& w) { return fitsWay(w, values); }))
       continue;
-    record(tally, fmt::format("{} ({} rules) of ({}): machine gave ({}) with seed {:#x}; allowed:{}{}",
-                              formulaName(f), precisionRulesName(rules), floats(inputs),
-                              floats(values), runSeed, intervals(ways),
-                              reproduction(f, inputs, rules)));
+    record(tally,
+           fmt::format("{} ({} rules) of ({}): machine gave ({}) with seed {:#x}; allowed:{}{}",
+                       formulaName(f), precisionRulesName(rules), floats(inputs), floats(values),
+                       runSeed, intervals(ways), reproduction(f, inputs, rules)));
   }
 }
 

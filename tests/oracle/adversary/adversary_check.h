@@ -15,8 +15,8 @@
 namespace snell::adversary {
 
 struct Tally {
-  std::uint64_t evaluations = 0;  // machine evaluations held against the oracle
-  std::uint64_t escapes = 0;      // results outside every alternative
+  std::uint64_t evaluations = 0;          // machine evaluations held against the oracle
+  std::uint64_t escapes = 0;              // results outside every alternative
   std::vector<std::string> firstEscapes;  // at most kEscapesKept, with a reproduction each
   static constexpr std::size_t kEscapesKept = 8;
   void add(const Tally& other);
@@ -24,27 +24,28 @@ struct Tally {
 
 // The built-in formulas the catalog uses, over float inputs.
 enum class Formula {
-  Reflect,        // I[3], N[3]
-  Refract,        // I[3], N[3], eta
-  Normalize,      // x[3]
-  Length,         // x[3]
-  Dot,            // x[4], y[4]
-  Pow,            // x, y
-  Exp2,           // x
-  Log2,           // x
-  Sqrt,           // x
-  InverseSqrt,    // x
-  Mix,            // x[3], y[3], a
-  Clamp,          // x, lo, hi (max then min)
-  Divide,         // a, b
-  MatrixVector,   // m[16], v[4]
-  FresnelRatio,   // the Orange Book's Ratio: F + (1 - F) * pow(1 - dot(-i, n), power); i[3], n[3], power
+  Reflect,       // I[3], N[3]
+  Refract,       // I[3], N[3], eta
+  Normalize,     // x[3]
+  Length,        // x[3]
+  Dot,           // x[4], y[4]
+  Pow,           // x, y
+  Exp2,          // x
+  Log2,          // x
+  Sqrt,          // x
+  InverseSqrt,   // x
+  Mix,           // x[3], y[3], a
+  Clamp,         // x, lo, hi (max then min)
+  Divide,        // a, b
+  MatrixVector,  // m[16], v[4]
+  FresnelRatio,  // the Orange Book's Ratio: F + (1 - F) * pow(1 - dot(-i, n), power); i[3], n[3],
+                 // power
 };
 
 inline constexpr Formula kAllFormulas[] = {
-    Formula::Reflect, Formula::Refract,     Formula::Normalize, Formula::Length,
-    Formula::Dot,     Formula::Pow,         Formula::Exp2,      Formula::Log2,
-    Formula::Sqrt,    Formula::InverseSqrt, Formula::Mix,       Formula::Clamp,
+    Formula::Reflect, Formula::Refract,      Formula::Normalize,   Formula::Length,
+    Formula::Dot,     Formula::Pow,          Formula::Exp2,        Formula::Log2,
+    Formula::Sqrt,    Formula::InverseSqrt,  Formula::Mix,         Formula::Clamp,
     Formula::Divide,  Formula::MatrixVector, Formula::FresnelRatio};
 
 const char* formulaName(Formula f);

@@ -53,20 +53,25 @@ float logUniform(Rng& rng, double lo, double hi) {
 float denormal(Rng& rng) { return logUniform(rng, -149, -126.01); }
 
 double pickEta(Rng& rng) {
-  static constexpr double kCatalog[] = {0.66,  1.0 / 0.66, 1.1,  1.0 / 1.1, 1.097, 1.103, 1.02,
-                                        0.98,  1.03,       1.06, 1.09,      0.65,  0.67,  0.9};
+  static constexpr double kCatalog[] = {0.66, 1.0 / 0.66, 1.1,  1.0 / 1.1, 1.097, 1.103, 1.02,
+                                        0.98, 1.03,       1.06, 1.09,      0.65,  0.67,  0.9};
   switch (rng.below(4)) {
-    case 0: return kCatalog[rng.below(static_cast<int>(std::size(kCatalog)))];
-    case 1: return 1.0 + rng.uniform(-0.05, 0.05);
-    case 2: return rng.percent(50) ? 1.0 : 1.0 + rng.uniform(-1e-6, 1e-6);
-    default: return rng.uniform(0.3, 3.0);
+    case 0:
+      return kCatalog[rng.below(static_cast<int>(std::size(kCatalog)))];
+    case 1:
+      return 1.0 + rng.uniform(-0.05, 0.05);
+    case 2:
+      return rng.percent(50) ? 1.0 : 1.0 + rng.uniform(-1e-6, 1e-6);
+    default:
+      return rng.uniform(0.3, 3.0);
   }
 }
 
 // Denormal components and huge or tiny scales, now and then.
 void roughen(std::vector<float>& v, std::size_t from, std::size_t count, Rng& rng) {
   const int kind = rng.below(12);
-  if (kind == 0) v[from + static_cast<std::size_t>(rng.below(static_cast<int>(count)))] = denormal(rng);
+  if (kind == 0)
+    v[from + static_cast<std::size_t>(rng.below(static_cast<int>(count)))] = denormal(rng);
   if (kind == 1) {
     const double scale = std::exp2(rng.uniform(40, 100));
     for (std::size_t k = from; k < from + count; ++k) v[k] = static_cast<float>(v[k] * scale);
@@ -113,21 +118,31 @@ std::vector<float> incidence(Rng& rng, bool withEta) {
 
 float anyFloat(Rng& rng) {
   switch (rng.below(6)) {
-    case 0: return logUniform(rng, -149, 127);
-    case 1: return denormal(rng);
-    case 2: return 0.0f;
-    default: return static_cast<float>(rng.uniform(-4, 4));
+    case 0:
+      return logUniform(rng, -149, 127);
+    case 1:
+      return denormal(rng);
+    case 2:
+      return 0.0f;
+    default:
+      return static_cast<float>(rng.uniform(-4, 4));
   }
 }
 
 float positive(Rng& rng) {
   switch (rng.below(8)) {
-    case 0: return std::fabs(logUniform(rng, -149, 127));
-    case 1: return std::fabs(denormal(rng));
-    case 2: return 0.0f;
-    case 3: return static_cast<float>(std::exp2(rng.uniform(-1.5, 1.5)));
-    case 4: return static_cast<float>(rng.percent(50) ? 0.5 : rng.percent(50) ? 1.0 : 2.0);
-    default: return static_cast<float>(rng.uniform(0, 4));
+    case 0:
+      return std::fabs(logUniform(rng, -149, 127));
+    case 1:
+      return std::fabs(denormal(rng));
+    case 2:
+      return 0.0f;
+    case 3:
+      return static_cast<float>(std::exp2(rng.uniform(-1.5, 1.5)));
+    case 4:
+      return static_cast<float>(rng.percent(50) ? 0.5 : rng.percent(50) ? 1.0 : 2.0);
+    default:
+      return static_cast<float>(rng.uniform(0, 4));
   }
 }
 
@@ -148,8 +163,10 @@ int Rng::below(int n) { return static_cast<int>(next() % static_cast<std::uint64
 
 std::vector<float> formulaInputs(Formula f, Rng& rng) {
   switch (f) {
-    case Formula::Reflect: return incidence(rng, false);
-    case Formula::Refract: return incidence(rng, true);
+    case Formula::Reflect:
+      return incidence(rng, false);
+    case Formula::Refract:
+      return incidence(rng, true);
     case Formula::FresnelRatio: {
       std::vector<float> v = incidence(rng, false);
       v.push_back(rng.percent(50) ? 5.0f : static_cast<float>(rng.uniform(0.5, 8)));
@@ -164,18 +181,19 @@ std::vector<float> formulaInputs(Formula f, Rng& rng) {
     }
     case Formula::Mix: {
       std::vector<float> v = incidence(rng, false);
-      const float a = rng.percent(30) ? (rng.percent(50) ? 0.0f : 1.0f)
-                                      : static_cast<float>(rng.uniform(0, 1));
+      const float a =
+          rng.percent(30) ? (rng.percent(50) ? 0.0f : 1.0f) : static_cast<float>(rng.uniform(0, 1));
       v.push_back(rng.percent(10) ? anyFloat(rng) : a);
       return v;
     }
     case Formula::Pow: {
-      const float y = rng.percent(30) ? (rng.percent(50) ? 5.0f : 1.97f)
-                                      : rng.percent(10) ? anyFloat(rng)
-                                                        : static_cast<float>(rng.uniform(0, 8));
+      const float y = rng.percent(30)   ? (rng.percent(50) ? 5.0f : 1.97f)
+                      : rng.percent(10) ? anyFloat(rng)
+                                        : static_cast<float>(rng.uniform(0, 8));
       return {positive(rng), y};
     }
-    case Formula::Exp2: return {rng.percent(80) ? static_cast<float>(rng.uniform(-155, 130)) : anyFloat(rng)};
+    case Formula::Exp2:
+      return {rng.percent(80) ? static_cast<float>(rng.uniform(-155, 130)) : anyFloat(rng)};
     case Formula::Log2:
     case Formula::Sqrt:
     case Formula::InverseSqrt: {
@@ -183,10 +201,13 @@ std::vector<float> formulaInputs(Formula f, Rng& rng) {
       if (rng.percent(5)) x = -x;
       return {x};
     }
-    case Formula::Clamp: return {anyFloat(rng), static_cast<float>(rng.uniform(-1, 0)), static_cast<float>(rng.uniform(0, 1))};
+    case Formula::Clamp:
+      return {anyFloat(rng), static_cast<float>(rng.uniform(-1, 0)),
+              static_cast<float>(rng.uniform(0, 1))};
     case Formula::Divide: {
       float b = anyFloat(rng);
-      if (rng.percent(10)) b = static_cast<float>(std::exp2(rng.percent(50) ? -126 : 126) * rng.uniform(0.99, 1.01));
+      if (rng.percent(10))
+        b = static_cast<float>(std::exp2(rng.percent(50) ? -126 : 126) * rng.uniform(0.99, 1.01));
       return {anyFloat(rng), b};
     }
     case Formula::Dot:
@@ -232,8 +253,7 @@ ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& r
       if (rng.percent(20)) {
         // A direction of an edge case in place of the scene's value.
         const std::vector<float> edge = incidence(rng, false);
-        for (std::size_t k = 0; k < std::min<std::size_t>(n, 3); ++k)
-          values[k] = edge[3 + k];
+        for (std::size_t k = 0; k < std::min<std::size_t>(n, 3); ++k) values[k] = edge[3 + k];
         roughen(values, 0, n, rng);
       }
       s.data.insert(s.data.end(), values.begin(), values.end());

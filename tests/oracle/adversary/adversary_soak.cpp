@@ -16,7 +16,8 @@
 namespace {
 
 int usage(const char* message) {
-  std::fprintf(stderr, "snell_adversary_soak: %s\nusage: snell_adversary_soak --seconds N --seed S\n",
+  std::fprintf(stderr,
+               "snell_adversary_soak: %s\nusage: snell_adversary_soak --seconds N --seed S\n",
                message);
   return 2;
 }
@@ -36,7 +37,8 @@ int main(int argc, char** argv) {
     const std::string arg = argv[k];
     if ((arg == "--seconds" || arg == "--seed") && k + 1 < argc) {
       unsigned long long& target = arg == "--seconds" ? seconds : seed;
-      if (!parseNumber(argv[++k], target)) return usage(("not a number: " + std::string(argv[k])).c_str());
+      if (!parseNumber(argv[++k], target))
+        return usage(("not a number: " + std::string(argv[k])).c_str());
     } else {
       return usage(("unknown argument: " + arg).c_str());
     }

@@ -96,8 +96,8 @@ void checkBuiltin(const BuiltinCall& call, Worst& worst) {
     const BuiltinResult r = evaluateBuiltin(call, rules);
     if (std::find(r.undefined.begin(), r.undefined.end(), true) != r.undefined.end()) continue;
     const std::string what = call.fn + " of " + describe(call.I) + "/ " + describe(call.N) +
-                             "eta " + std::to_string(call.eta) + " (" +
-                             precisionRulesName(rules) + ")";
+                             "eta " + std::to_string(call.eta) + " (" + precisionRulesName(rules) +
+                             ")";
     if (!insideOneWay(r, exact)) worst.notInside(what);
     if (rules == PrecisionRules::Glsl) {
       const double e = relativeError(r.value, exact);
@@ -191,23 +191,26 @@ TEST(OracleHighPrecision, EveryListingOutputAgreesWithMpfr) {
             const std::span<const double> mine = std::span<const double>(exact).subspan(offset, n);
             offset += n;
             bool undefined = false;
-            for (std::size_t k = 0; k < n; ++k) undefined = undefined || v.undefined[vertex * n + k];
+            for (std::size_t k = 0; k < n; ++k)
+              undefined = undefined || v.undefined[vertex * n + k];
             if (undefined) continue;
             const std::string what = std::string(name) + " " + v.name + " vertex " +
-                                     std::to_string(vertex) + " (" + precisionRulesName(rules) + ")";
+                                     std::to_string(vertex) + " (" + precisionRulesName(rules) +
+                                     ")";
             if (!insideVarying(v, vertex, mine)) worst.notInside(what);
             if (rules != PrecisionRules::Glsl) continue;
-            const double e = relativeError(
-                std::span<const double>(v.reference).subspan(vertex * n, n), mine);
+            const double e =
+                relativeError(std::span<const double>(v.reference).subspan(vertex * n, n), mine);
             if (e >= 0.0) worst.see(e, what);
           }
         }
       }
     }
   });
-  std::printf("listings: %zu runs, %zu outputs compared, worst relative error %.3g (%s), %zu "
-              "outside\n",
-              listingsRun, worst.compared, worst.relative, worst.where.c_str(), worst.outside);
+  std::printf(
+      "listings: %zu runs, %zu outputs compared, worst relative error %.3g (%s), %zu "
+      "outside\n",
+      listingsRun, worst.compared, worst.relative, worst.where.c_str(), worst.outside);
   for (const std::string& s : worst.firstOutside) ADD_FAILURE() << "exact value outside: " << s;
   EXPECT_LE(worst.relative, kTolerance) << worst.where;
   EXPECT_GE(listingsRun, vertexOracleNames().size());
