@@ -158,10 +158,11 @@ TEST(OracleAudit, SqrtOfARangeReachingZeroKeepsATightErrorBound) {
   }
 }
 
-// Vulkan's distributivity, for a product of many sums, bounded for every
-// expansion of the product (a thousand terms of degree 12) is thousands of
-// times wider than the sums evaluated first; the oracle stops distributing
-// past a budget, as the machine does (oracle/interval_region.h).
+// Vulkan's distributivity, for a product of six sums of four terms, bounded
+// for every expansion of the product (4096 terms of degree 13) is thousands
+// of times wider than the sums evaluated first; the oracle stops
+// distributing past a budget of terms, as the machine does
+// (oracle/interval_region.h): within 16 times the GLSL interval here.
 TEST(OracleAudit, VulkanDistributivityOfALargeProductIsCapped) {
   const auto width = [](PrecisionRules rules) {
     const UsePrecisionRules use(rules);

@@ -48,7 +48,7 @@ template <class T, int Size>
 vec<T, Size> normalize(const vec<T, Size>& x) {
   if (currentPrecisionRules() != PrecisionRules::Vulkan) return x / length(x);
   if constexpr (std::same_as<T, Interval>) {
-    return inherited(x * inversesqrt(dot(x, x)));  // AUDIT-BEFORE
+    return inherited(hull(x * inversesqrt(dot(x, x)), x / length(x)));
   } else if constexpr (ChoosesFormula<T>) {
     if (T::chooseFormula(2) == 0) return x / length(x);
     return x * inversesqrt(dot(x, x));

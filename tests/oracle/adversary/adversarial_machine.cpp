@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "oracle/fp32.h"
+#include "oracle/interval_region.h"
 
 namespace snell::adversary {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-constexpr double kDistributionTerms = 64;
+constexpr double kDistributionTerms = kVulkanDistributionTerms;
 
 struct Node {
   enum class Op : std::uint8_t { Leaf, Add, Mul, Neg };
