@@ -229,7 +229,8 @@ Term single(float value) { return Term{false, {Factor{value, false, 0.0}}}; }
 Terms expand(int id) {
   const Node n = nodeAt(id);
   if (n.op == Node::Op::Leaf) return {Term{false, {Factor{n.value, n.constant, n.folded}}}};
-  if (n.constant && percent(tState.foldPercent)) {
+  // A constant sum or product may be folded; a negation rounds nothing.
+  if (n.constant && n.op != Node::Op::Neg && percent(tState.foldPercent)) {
     return {Term{false, {Factor{foldToFloat(n.folded), false, 0.0}}}};
   }
   if (n.hasMemo) return {single(n.memo)};
