@@ -271,14 +271,16 @@ Terms expand(int id) {
   }
 }
 
-// Folds some constant factors of a term into one (after regrouping them
-// next to each other).
+// Folds the constant factors of a term into one, after regrouping them
+// next to each other. That is the driver's folding, of the module's fp32
+// constants (SPIR-V holds them as floats); glslang folds from the decimals,
+// but only the expression as written (expand()).
 void foldConstantFactors(Term& t) {
   std::vector<Factor> constants, others;
   for (const Factor& f : t.factors) (f.constant ? constants : others).push_back(f);
   if (constants.size() < 2 || !percent(tState.foldPercent)) return;
   double product = 1.0;
-  for (const Factor& f : constants) product *= f.folded;
+  for (const Factor& f : constants) product *= f.value;
   others.push_back(Factor{foldToFloat(product), false, 0.0});
   t.factors = std::move(others);
 }
@@ -316,7 +318,8 @@ Pending combine(const Pending& a, const Pending& b) {
 }
 
 float evaluate(Terms terms) {
-  // Constant terms may be folded together once regrouped side by side.
+  // Constant terms may be folded together once regrouped side by side (by
+  // the driver, from their fp32 values, as foldConstantFactors).
   std::vector<std::size_t> constantTerms;
   for (std::size_t k = 0; k < terms.size(); ++k) {
     const bool constant = std::all_of(terms[k].factors.begin(), terms[k].factors.end(),
@@ -327,7 +330,7 @@ float evaluate(Terms terms) {
     double sum = 0.0;
     for (std::size_t k : constantTerms) {
       double product = terms[k].negative ? -1.0 : 1.0;
-      for (const Factor& f : terms[k].factors) product *= f.folded;
+      for (const Factor& f : terms[k].factors) product *= f.value;
       sum += product;
     }
     Terms kept;
