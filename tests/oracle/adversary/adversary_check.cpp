@@ -85,12 +85,6 @@ Ways oracleWays(Evaluate evaluate) {
   return ways;
 }
 
-bool fitsWay(const std::vector<Interval>& way, const std::vector<float>& v) {
-  for (std::size_t k = 0; k < v.size(); ++k)
-    if (!way[k].undefined && !contains(way[k], v[k])) return false;
-  return true;
-}
-
 std::string floats(std::span<const float> v) {
   std::string s;
   for (std::size_t k = 0; k < v.size(); ++k) s += fmt::format("{}{:.9g}", k ? "," : "", v[k]);
@@ -218,6 +212,14 @@ std::string vertexInputs(const AttributeMap& attributes, std::size_t vertex) {
 
 }  // namespace
 
+bool fitsOneWay(const std::vector<std::vector<Interval>>& ways, std::span<const float> values) {
+  return std::any_of(ways.begin(), ways.end(), [&](const std::vector<Interval>& way) {
+    for (std::size_t k = 0; k < values.size(); ++k)
+      if (!way[k].undefined && !contains(way[k], values[k])) return false;
+    return true;
+  });
+}
+
 void Tally::add(const Tally& other) {
   evaluations += other.evaluations;
   escapes += other.escapes;
@@ -306,8 +308,7 @@ void checkFormula(Formula f, std::span<const float> inputs, PrecisionRules rules
     std::vector<float> values;
     for (const Adv& x : out) values.push_back(x.value());
     ++tally.evaluations;
-    if (std::any_of(ways.begin(), ways.end(), [&](const auto& w) { return fitsWay(w, values); }))
-      continue;
+    if (fitsOneWay(ways, values)) continue;
     record(tally,
            fmt::format("{} ({} rules) of ({}): machine gave ({}) with seed {:#x}; allowed:{}{}",
                        formulaName(f), precisionRulesName(rules), floats(inputs), floats(values),

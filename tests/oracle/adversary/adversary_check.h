@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/values.h"
+#include "oracle/interval.h"
 #include "oracle/precision_rules.h"
 
 namespace snell::adversary {
@@ -50,6 +51,10 @@ inline constexpr Formula kAllFormulas[] = {
 
 const char* formulaName(Formula f);
 int formulaInputs(Formula f);
+
+// Whether a machine's vector fits one of the oracle's ways whole (NaN fits
+// only an undefined component).
+bool fitsOneWay(const std::vector<std::vector<Interval>>& ways, std::span<const float> values);
 
 // Runs the machine `runs` times on `inputs` (seeds from `seed`) and counts.
 void checkFormula(Formula f, std::span<const float> inputs, PrecisionRules rules, int runs,

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 
 #include "adversary/adversarial_machine.h"
@@ -60,6 +61,23 @@ TEST(Adversary, EveryRegisteredListingRunsOnTheMachine) {
     EXPECT_NE(std::find(machine.begin(), machine.end(), name), machine.end())
         << name << " has no machine run";
   }
+}
+
+TEST(Adversary, AVectorMustFitOneWayWhole) {
+  // Two ways, as near the critical angle: the zero vector or a ray.
+  const std::vector<std::vector<Interval>> ways = {
+      {Interval(0.0, 0.0), Interval(0.0, 0.0)},
+      {Interval(0.5, 0.6), Interval(-0.2, -0.1)},
+  };
+  EXPECT_TRUE(fitsOneWay(ways, std::vector<float>{0.0f, 0.0f}));
+  EXPECT_TRUE(fitsOneWay(ways, std::vector<float>{0.55f, -0.15f}));
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{0.0f, -0.15f})) << "a mix of the two";
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{0.55f, -0.25f})) << "outside the ray's y";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{nan, nan})) << "NaN where the spec says a value";
+  const std::vector<std::vector<Interval>> open = {{Interval::unconstrained(), Interval(1.0, 1.0)}};
+  EXPECT_TRUE(fitsOneWay(open, std::vector<float>{nan, 1.0f}));
+  EXPECT_FALSE(fitsOneWay(open, std::vector<float>{nan, 2.0f}));
 }
 
 // The values the machine returns for f over many runs.
