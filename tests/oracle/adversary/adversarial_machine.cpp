@@ -414,8 +414,9 @@ float quotient(float a, float b) {
 // The libm double functions used as "exact" are within a few double ULPs.
 constexpr double kLibmRelative = 0x1p-48;
 
-float inverseSqrtOf(float x) {
-  x = maybeFlush(x);
+// `x` as the argument arrives (a denormal may be flushed on the way in).
+float inverseSqrtOf(float x, bool flushArgument = true) {
+  if (flushArgument) x = maybeFlush(x);
   if (std::isnan(x) || x <= 0.0f) return kNaN;
   return pickWithinUlps(1.0 / std::sqrt(static_cast<double>(x)), 2.0, kLibmRelative);
 }
@@ -524,8 +525,8 @@ Adv sqrt(const Adv& x) {
   const float v = maybeFlush(x.value());
   if (std::isnan(v) || v < 0.0f) return leaf(kNaN);
   if (v == 0.0f) return leaf(0.0f);  // see the header: the formula's limit
-  // Inherited from 1.0 / inversesqrt(x).
-  return leaf(quotient(1.0f, inverseSqrtOf(v)));
+  // Inherited from 1.0 / inversesqrt(x), x already past its one flush.
+  return leaf(quotient(1.0f, inverseSqrtOf(v, false)));
 }
 
 Adv exp2(const Adv& x) {

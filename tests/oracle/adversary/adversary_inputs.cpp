@@ -3,13 +3,16 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
 
+#include "catalog_shaders.h"
 #include "core/case.h"
 #include "core/manifest.h"
 #include "core/scene.h"
+#include "oracle/listings/interface_visitors.h"
 
 namespace snell::adversary {
 namespace {
@@ -221,16 +224,55 @@ std::vector<float> formulaInputs(Formula f, Rng& rng) {
   return {};
 }
 
+namespace {
+
+// A listing's per-invocation inputs (vertex attributes, or a fragment
+// listing's values read back at its probes) and their component counts.
+std::map<std::string, int> interfaceInputs(const std::string& oracle) {
+  std::map<std::string, int> inputs;
+  test::forEachCatalogShader([&]<template <class> class Shader>(const char* name, bool) {
+    if (oracle != name) return;
+    Shader<double> shader{};
+    listings::DescribeInterface describe;
+    shader.visit(describe);
+    for (const listings::InterfaceEntry& e : describe.entries())
+      if (e.kind == listings::InterfaceEntry::Kind::Input) inputs[e.name] = componentCount(e.type);
+  });
+  return inputs;
+}
+
+// Values for an input the scene does not give (a fragment listing's
+// interpolated vectors): directions and points at random, w = 1.
+AttributeStream syntheticInput(const std::string& name, int components, std::size_t vertices,
+                               Rng& rng) {
+  AttributeStream s{name, components, {}};
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Vec3 u = unitVector(rng);
+    const double scale = rng.percent(50) ? 1.0 : rng.uniform(0.1, 10.0);
+    for (int k = 0; k < components; ++k)
+      s.data.push_back(k < 3 ? static_cast<float>(u[static_cast<std::size_t>(k)] * scale) : 1.0f);
+  }
+  return s;
+}
+
+}  // namespace
+
 const std::vector<ListingInputs>& catalogListings() {
   static const std::vector<ListingInputs> listings = [] {
     std::vector<ListingInputs> all;
     std::set<std::pair<std::string, ConstantMap>> seen;
+    Rng rng(0x1a7e);
     const std::filesystem::path root = std::filesystem::path(SNELL_SOURCE_ROOT) / "shaders";
     for (const Manifest& manifest : loadManifests(root)) {
       if (manifest.oracle.empty() || manifest.cases.empty()) continue;
       if (!seen.insert({manifest.oracle, manifest.constants}).second) continue;
       const Scene scene = makeScene(manifest.cases.front().scene);
-      const ResolvedBindings bindings = resolveBindings(manifest, scene);
+      ResolvedBindings bindings = resolveBindings(manifest, scene);
+      if (bindings.vertexCount == 0) bindings.vertexCount = 256;
+      for (const auto& [name, components] : interfaceInputs(manifest.oracle))
+        if (!bindings.attributes.count(name))
+          bindings.attributes.emplace(name,
+                                      syntheticInput(name, components, bindings.vertexCount, rng));
       all.push_back(ListingInputs{manifest.oracle, bindings.uniforms, manifest.constants,
                                   bindings.attributes, bindings.vertexCount});
     }
