@@ -4,6 +4,7 @@
 // relative, and the exact value lies inside the oracle's intervals (inside
 // one alternative, whole, where a branch may go either way).
 //
+// Built-ins are compared where I and N are unit vectors, as GLSL asks.
 // Relative error is norm-wise, per output vector: max |double - exact| over
 // its components divided by max |exact| (a scalar output: plain relative
 // error). A component that cancels to nearly 0 is judged against the
@@ -90,6 +91,12 @@ bool insideOneWay(const BuiltinResult& r, const std::vector<double>& exact) {
   });
 }
 
+bool isUnit(const std::vector<float>& v) {
+  double sum = 0.0;
+  for (float x : v) sum += static_cast<double>(x) * x;
+  return std::fabs(std::sqrt(sum) - 1.0) < 1e-6;
+}
+
 void checkBuiltin(const BuiltinCall& call, Worst& worst) {
   const std::vector<double> exact = exactBuiltin<3>(call);
   for (PrecisionRules rules : {PrecisionRules::Glsl, PrecisionRules::Vulkan}) {
@@ -99,7 +106,9 @@ void checkBuiltin(const BuiltinCall& call, Worst& worst) {
                              "eta " + std::to_string(call.eta) + " (" + precisionRulesName(rules) +
                              ")";
     if (!insideOneWay(r, exact)) worst.notInside(what);
-    if (rules == PrecisionRules::Glsl) {
+    // GLSL's reflect and refract ask for unit I and N; off them (a huge N,
+    // say) the formula itself cancels and no double evaluation agrees.
+    if (rules == PrecisionRules::Glsl && isUnit(call.I) && isUnit(call.N)) {
       const double e = relativeError(r.value, exact);
       if (e >= 0.0) worst.see(e, what);
     }
@@ -133,7 +142,7 @@ TEST(OracleHighPrecision, ReflectAndRefractAgreeWithMpfr) {
               worst.compared, worst.relative, worst.where.c_str(), worst.outside);
   for (const std::string& s : worst.firstOutside) ADD_FAILURE() << "exact value outside: " << s;
   EXPECT_LE(worst.relative, kTolerance) << worst.where;
-  EXPECT_GT(worst.compared, 4000u);
+  EXPECT_GT(worst.compared, 2000u);
 }
 
 // The listing run over Mp at one vertex: every output component, in visit order.
