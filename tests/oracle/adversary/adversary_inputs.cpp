@@ -86,7 +86,7 @@ void roughen(std::vector<float>& v, std::size_t from, std::size_t count, Rng& rn
   if (kind == 3) v[from + static_cast<std::size_t>(rng.below(static_cast<int>(count)))] = 0.0f;
 }
 
-std::vector<float> incidence(Rng& rng, bool withEta) {
+std::vector<float> incidence(Rng& rng, bool withEta, bool unitOnly = false) {
   const Vec3 n = unitVector(rng);
   const double eta = pickEta(rng);
   Vec3 i;
@@ -109,12 +109,14 @@ std::vector<float> incidence(Rng& rng, bool withEta) {
   std::vector<float> v;
   for (double x : i) v.push_back(static_cast<float>(x));
   for (double x : n) v.push_back(static_cast<float>(x));
-  if (rng.percent(15)) {  // N not quite unit
+  if (!unitOnly && rng.percent(15)) {  // N not quite unit
     const double s = rng.uniform(0.5, 2.0);
     for (std::size_t k = 3; k < 6; ++k) v[k] = static_cast<float>(v[k] * s);
   }
-  roughen(v, 0, 3, rng);
-  roughen(v, 3, 3, rng);
+  if (!unitOnly) {
+    roughen(v, 0, 3, rng);
+    roughen(v, 3, 3, rng);
+  }
   if (withEta) v.push_back(static_cast<float>(eta));
   return v;
 }
@@ -248,7 +250,9 @@ AttributeStream syntheticInput(const std::string& name, int components, std::siz
   AttributeStream s{name, components, {}};
   for (std::size_t v = 0; v < vertices; ++v) {
     const Vec3 u = unitVector(rng);
-    const double scale = rng.percent(50) ? 1.0 : rng.uniform(0.1, 10.0);
+    // A normal arrives nearly unit; a position at any distance.
+    const bool normal = name.find("norm") != std::string::npos;
+    const double scale = normal || rng.percent(50) ? 1.0 : rng.uniform(0.1, 10.0);
     for (int k = 0; k < components; ++k)
       s.data.push_back(k < 3 ? static_cast<float>(u[static_cast<std::size_t>(k)] * scale) : 1.0f);
   }
@@ -281,7 +285,8 @@ const std::vector<ListingInputs>& catalogListings() {
   return listings;
 }
 
-ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& rng) {
+ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& rng,
+                             bool unitEdges) {
   ListingInputs r{all.oracle, all.uniforms, all.constants, {}, count};
   std::vector<std::size_t> picked;
   for (std::size_t k = 0; k < count; ++k)
@@ -294,9 +299,9 @@ ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& r
                                 stream.data.begin() + static_cast<std::ptrdiff_t>(vertex * n + n));
       if (rng.percent(20)) {
         // A direction of an edge case in place of the scene's value.
-        const std::vector<float> edge = incidence(rng, false);
+        const std::vector<float> edge = incidence(rng, false, unitEdges);
         for (std::size_t k = 0; k < std::min<std::size_t>(n, 3); ++k) values[k] = edge[3 + k];
-        roughen(values, 0, n, rng);
+        if (!unitEdges) roughen(values, 0, n, rng);
       }
       s.data.insert(s.data.end(), values.begin(), values.end());
     }

@@ -30,7 +30,9 @@ std::vector<float> formulaInputs(Formula f, Rng& rng);
 const std::vector<ListingInputs>& catalogListings();
 
 // `count` vertices of `all`, drawn at random; some of them with their
-// attributes replaced by random or edge values.
-ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& rng);
+// attributes replaced by edge directions, with denormals and huge or tiny
+// scales unless `unitEdges` (the edge directions stay unit vectors).
+ListingInputs sampleVertices(const ListingInputs& all, std::size_t count, Rng& rng,
+                             bool unitEdges = false);
 
 }  // namespace snell::adversary
