@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
     Rng rng(seed);
     Tally builtins, listings;
     double nextReport = 30;
+    std::size_t shownBuiltins = 0, shownListings = 0;
     const auto& catalog = catalogListings();
     for (std::uint64_t round = 0; elapsed() < static_cast<double>(seconds); ++round) {
       const snell::PrecisionRules rules =
@@ -60,6 +61,11 @@ int main(int argc, char** argv) {
           checkFormula(f, formulaInputs(f, rng), rules, 8, rng.next(), builtins);
       const ListingInputs& listing = catalog[round % catalog.size()];
       checkListing(sampleVertices(listing, 16, rng), rules, 6, rng.next(), listings);
+      // Escapes as they are found, so that a long run shows them early.
+      for (Tally* t : {&builtins, &listings})
+        for (std::size_t& shown = t == &builtins ? shownBuiltins : shownListings;
+             shown < t->firstEscapes.size(); ++shown)
+          std::printf("ESCAPE %s\n", t->firstEscapes[shown].c_str());
       if (elapsed() >= nextReport) {
         std::printf("%.0f s: %llu evaluations, %llu escapes\n", elapsed(),
                     static_cast<unsigned long long>(builtins.evaluations + listings.evaluations),
@@ -70,7 +76,6 @@ int main(int argc, char** argv) {
     }
     Tally all = builtins;
     all.add(listings);
-    for (const std::string& e : all.firstEscapes) std::printf("ESCAPE %s\n", e.c_str());
     std::printf("seed %llu, %.0f s: %llu evaluations (%llu built-in, %llu listing), %llu escapes\n",
                 seed, elapsed(), static_cast<unsigned long long>(all.evaluations),
                 static_cast<unsigned long long>(builtins.evaluations),
