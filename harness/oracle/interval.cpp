@@ -74,9 +74,9 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
   // sum is rounded before it is multiplied, and a leaf is taken closed.
   // Under Vulkan a product past the distribution budget takes its
   // operands of several terms closed.
-  const bool overBudget = op == RegionOp::Multiply && rules == PrecisionRules::Vulkan &&
-                          static_cast<double>(a.region.terms) * b.region.terms >
-                              kVulkanDistributionTerms;
+  const bool overBudget =
+      op == RegionOp::Multiply && rules == PrecisionRules::Vulkan &&
+      static_cast<double>(a.region.terms) * b.region.terms > kVulkanDistributionTerms;
   const auto operand = [&](const Interval& v) {
     const bool open = v.region.kind != IntervalRegion::Kind::Leaf &&
                       !(op == RegionOp::Multiply && rules == PrecisionRules::Glsl &&
@@ -261,6 +261,26 @@ Interval closedView(const Interval& value) {
     r.err = 0.0;
   }
   r.region = closedRegion(r);
+  return r;
+}
+
+Interval withAlternative(const Interval& value, const Interval& alternative) {
+  if (value.undefined || alternative.undefined) return Interval::unconstrained();
+  Interval r = value;
+  r.lo = std::min(value.lo, alternative.lo);
+  r.hi = std::max(value.hi, alternative.hi);
+  r.idealLo = std::min(value.idealLo, alternative.idealLo);
+  r.idealHi = std::max(value.idealHi, alternative.idealHi);
+  // The alternative's distance from the exact value: its own error, and
+  // the gap between the two ideal ranges (the same function, bounded
+  // two ways).
+  const double spread = std::max(std::fabs(alternative.idealLo - r.idealLo),
+                                 std::fabs(r.idealHi - alternative.idealHi));
+  const double altErr = float_sets::up(alternative.err + spread);
+  r.err = std::max(r.err, altErr);
+  r.region.mag = std::max(r.region.mag, float_sets::up(r.region.mag0 + altErr));
+  r.region.maxSub = std::max(r.region.maxSub, r.region.mag);
+  r.constant = false;
   return r;
 }
 

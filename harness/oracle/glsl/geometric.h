@@ -48,7 +48,11 @@ template <class T, int Size>
 vec<T, Size> normalize(const vec<T, Size>& x) {
   if (currentPrecisionRules() != PrecisionRules::Vulkan) return x / length(x);
   if constexpr (std::same_as<T, Interval>) {
-    return inherited(hull(x * inversesqrt(dot(x, x)), x / length(x)));
+    const vec<T, Size> product = x * inversesqrt(dot(x, x));
+    const vec<T, Size> quotient = x / length(x);
+    vec<T, Size> r;
+    for (int k = 0; k < Size; ++k) r[k] = withAlternative(product[k], quotient[k]);
+    return inherited(r);
   } else if constexpr (ChoosesFormula<T>) {
     if (T::chooseFormula(2) == 0) return x / length(x);
     return x * inversesqrt(dot(x, x));
@@ -96,7 +100,8 @@ template <Number T>
 T mix(const T& x, const T& y, const T& a) {
   const T written = x * (lit<T>(1.0) - a) + y * a;
   if constexpr (std::same_as<T, Interval>) {
-    if (currentPrecisionRules() == PrecisionRules::Glsl) return hull(written, x + (y - x) * a);
+    if (currentPrecisionRules() == PrecisionRules::Glsl)
+      return withAlternative(written, x + (y - x) * a);
     return inherited(written);
   } else if constexpr (ChoosesFormula<T>) {
     return T::chooseFormula(2) == 0 ? written : x + (y - x) * a;
