@@ -32,12 +32,15 @@ IntervalRegion closedRegion(const Interval& v) {
 // A constant expression's result may also be the compiler's own folding of
 // the decimal literals, rounded once to fp32 (either way: a double
 // evaluation is within a few double ULPs of exact, well inside the float
-// gap). The allowed set and the error bound grow to hold that value too;
+// gap): both neighbouring floats of the double value, whichever the
+// compiler's rounding picks. The allowed set and the error bound grow to
+// hold them too;
 // the region keeps the fold as an alternative leaf.
 Interval withFold(Interval r, double folded) {
   if (r.undefined || !std::isfinite(folded)) return r;
   const double slop = std::fabs(folded) * 0x1p-50;
-  const Range fold = float_sets::floatsIn(folded - slop, folded + slop);
+  const Range fold =
+      float_sets::admitFlushToZero(float_sets::roundedAround({folded, folded}, slop));
   r.lo = std::min(r.lo, fold.lo);
   r.hi = std::max(r.hi, fold.hi);
   const double foldErr = std::max(std::fabs(fold.hi - r.idealLo), std::fabs(r.idealHi - fold.lo));
@@ -69,10 +72,16 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
   const PrecisionRules rules = currentPrecisionRules();
   // An open region joins the result's region; without distributivity a
   // sum is rounded before it is multiplied, and a leaf is taken closed.
+  // Under Vulkan a product past the distribution budget takes its
+  // operands of several terms closed.
+  const bool overBudget =
+      op == RegionOp::Multiply && rules == PrecisionRules::Vulkan &&
+      static_cast<double>(a.region.terms) * b.region.terms > kVulkanDistributionTerms;
   const auto operand = [&](const Interval& v) {
     const bool open = v.region.kind != IntervalRegion::Kind::Leaf &&
                       !(op == RegionOp::Multiply && rules == PrecisionRules::Glsl &&
-                        v.region.kind == IntervalRegion::Kind::Sum);
+                        v.region.kind == IntervalRegion::Kind::Sum) &&
+                      !(overBudget && v.region.terms > 1);
     return open ? v : closedView(v);
   };
   const Interval av = operand(a);
@@ -252,6 +261,26 @@ Interval closedView(const Interval& value) {
     r.err = 0.0;
   }
   r.region = closedRegion(r);
+  return r;
+}
+
+Interval withAlternative(const Interval& value, const Interval& alternative) {
+  if (value.undefined || alternative.undefined) return Interval::unconstrained();
+  Interval r = value;
+  r.lo = std::min(value.lo, alternative.lo);
+  r.hi = std::max(value.hi, alternative.hi);
+  r.idealLo = std::min(value.idealLo, alternative.idealLo);
+  r.idealHi = std::max(value.idealHi, alternative.idealHi);
+  // The alternative's distance from the exact value: its own error, and
+  // the gap between the two ideal ranges (the same function, bounded
+  // two ways).
+  const double spread = std::max(std::fabs(alternative.idealLo - r.idealLo),
+                                 std::fabs(r.idealHi - alternative.idealHi));
+  const double altErr = float_sets::up(alternative.err + spread);
+  r.err = std::max(r.err, altErr);
+  r.region.mag = std::max(r.region.mag, float_sets::up(r.region.mag0 + altErr));
+  r.region.maxSub = std::max(r.region.maxSub, r.region.mag);
+  r.constant = false;
   return r;
 }
 

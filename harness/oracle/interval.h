@@ -116,6 +116,15 @@ Interval leafValue(double lo, double hi, double idealLo, double idealHi, double 
 // taken as "any float of its set, exactly".
 Interval closedView(const Interval& value);
 
+// `value` (an open region an implementation may regroup with its
+// consumer) or, instead, `alternative` (another formula an implementation
+// may use for the same built-in): the allowed set, ideal range and error
+// bound of both, and value's region grown to hold the alternative as a
+// leaf. Closing both into a hull would hide what a regrouping across the
+// built-in can do (a partial product that overflows, or underflows and is
+// then scaled up).
+Interval withAlternative(const Interval& value, const Interval& alternative);
+
 // A Vulkan built-in whose precision is inherited from a formula must return
 // a value in [x - E, x + E] around the exact result x, E being the largest
 // distance of any permitted value of any equivalent formula: the allowed

@@ -35,8 +35,10 @@ Interval folded(Interval r, const Interval& x, double (*f)(double)) {
   if (!x.constant || r.undefined) return r;
   const double value = f(x.folded);
   if (!std::isfinite(value)) return r;
+  // Either neighbouring float of the folded double value.
   const double slop = std::fabs(value) * 0x1p-50;
-  const float_sets::Range fold = float_sets::floatsIn(value - slop, value + slop);
+  const float_sets::Range fold =
+      float_sets::admitFlushToZero(float_sets::roundedAround({value, value}, slop));
   r.lo = std::min(r.lo, fold.lo);
   r.hi = std::max(r.hi, fold.hi);
   r.err = std::max(r.err, std::max(std::fabs(fold.hi - r.idealLo), std::fabs(r.idealHi - fold.lo)));
@@ -88,13 +90,15 @@ Interval sqrt(const Interval& xIn) {
   const double m = std::max(0.0, smallestArgument(x));
   const double propagated =
       m > 0.0 ? std::min(std::sqrt(x.err), x.err / (2.0 * std::sqrt(m))) : std::sqrt(x.err);
-  // r = inversesqrt within 2 ULP, then 1 / r within 2.5 ULP: the first
-  // moves 1/r by at most 2 gap(r) / r of its value.
-  const double rMax = above(1.0 / std::sqrt(std::max(x.lo, kFp32MinDenormal)));
-  const double rMin = below(1.0 / std::sqrt(x.hi));
+  // r = inversesqrt within 2 ULP, then 1 / r within 2.5 ULP. The first is
+  // a relative error |delta| <= 2 gap(r) / r <= 2^-22 (r >= 2^-64 is
+  // normal), which moves 1/r by |delta| / (1 - |delta|) of its value: a
+  // bound relative to the result, whatever the smallest argument (at x =
+  // 0 the result is exactly 0).
   const double sMax = above(std::sqrt(x.hi));
-  const double own = up(2.0 * gapAbove(rMax) / rMin * sMax * (1.0 + 0x1p-20) +
-                        2.5 * gapAbove(root.hi) + float_sets::flushError(lo, root.hi));
+  const double delta = 0x1p-22;
+  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * gapAbove(root.hi) +
+                        float_sets::flushError(lo, root.hi));
   const Interval r =
       leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
                 above(std::sqrt(std::max(0.0, x.idealHi))), up(up(propagated) + own));
@@ -157,18 +161,12 @@ Interval log2(const Interval& xIn) {
 }
 
 Interval pow(const Interval& x, const Interval& y) {
-  if (x.undefined || y.undefined || x.lo < 0.0) return Interval::unconstrained();
-  const bool baseMayBeZero = x.lo <= 0.0;
-  if (baseMayBeZero && y.lo <= 0.0) return Interval::unconstrained();
-  const Interval zero = Interval::point(0.0f);
-  if (x.hi <= 0.0) return zero;
-  Interval positive(std::max(x.lo, kFp32MinDenormal), x.hi);
-  positive.idealLo = std::max(x.idealLo, kFp32MinDenormal);
-  positive.idealHi = std::max(x.idealHi, positive.idealLo);
-  positive.err = x.err;
-  positive.region = leafRegion(positive.idealHi, x.err, false);
-  const Interval power = exp2(y * log2(positive));
-  return baseMayBeZero ? hull(zero, power) : power;
+  // The precision is inherited from exp2(y * log2(x)), and log2(0) has
+  // none: where the base may be 0 (or a denormal that is flushed) the
+  // result is open, pow(0, y > 0) = 0 of the function's definition
+  // included.
+  if (x.undefined || y.undefined || x.lo <= 0.0) return Interval::unconstrained();
+  return exp2(y * log2(x));
 }
 
 Interval max(const Interval& aIn, const Interval& bIn) {

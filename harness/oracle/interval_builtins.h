@@ -20,8 +20,8 @@ Interval exp2(const Interval& x);
 Interval exp(const Interval& x);
 // 3 ULP outside [0.5, 2], absolute error < 2^-21 inside; undefined for x <= 0.
 Interval log2(const Interval& x);
-// Inherited from exp2(y * log2(x)); undefined for x < 0, and for x = 0 with
-// y <= 0; pow(0, y > 0) is 0.
+// Inherited from exp2(y * log2(x)); undefined where x may be <= 0 (log2(0)
+// has no precision, so neither has pow(0, y)).
 Interval pow(const Interval& x, const Interval& y);
 // Exact.
 Interval max(const Interval& a, const Interval& b);

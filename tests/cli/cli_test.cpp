@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,12 +24,12 @@ struct Outcome {
 Outcome snell(const std::string& args, const std::string& input = "") {
   const fs::path in = fs::temp_directory_path() / fmt::format("snell-cli-in-{}", ::getpid());
   std::ofstream(in) << input;
-  const std::string command =
-      fmt::format("{} {} < {} 2>&1", SNELL_BINARY, args, in.string());
+  const std::string command = fmt::format("{} {} < {} 2>&1", SNELL_BINARY, args, in.string());
   FILE* pipe = popen(command.c_str(), "r");
   Outcome outcome;
   std::array<char, 4096> buffer;
-  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe)) outcome.out.append(buffer.data(), n);
+  while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
+    outcome.out.append(buffer.data(), n);
   const int status = pclose(pipe);
   outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   fs::remove(in);
@@ -84,6 +85,41 @@ TEST(Cli, EvalOracleAnswersEveryLineInOrder) {
   EXPECT_NEAR(lines[1]["value"][1].get<double>(), 0.8, 1e-7);
   EXPECT_LE(lines[1]["lo"][1].get<double>(), lines[1]["value"][1].get<double>());
   EXPECT_GE(lines[1]["hi"][1].get<double>(), lines[1]["value"][1].get<double>());
+}
+
+// Near the critical angle refract() may return the zero vector or the
+// refracted ray: eval shows both ways, and a vector that takes its x from
+// one and y, z from the other lies in the box of lo and hi but in neither way.
+TEST(Cli, EvalOracleShowsBothWaysOfRefractNearTheCriticalAngle) {
+  const float d = -0.7f;
+  const float s = std::sqrt(1.0f - d * d);
+  const Outcome o = snell(
+      "eval --backend oracle",
+      fmt::format("{{\"fn\":\"refract\",\"I\":[{:.9g},{:.9g},0],\"N\":[0,1,0],\"eta\":{:.9g}}}\n",
+                  s, d, 1.0f / s));
+  EXPECT_EQ(o.code, 0) << o.out;
+  const auto lines = jsonLines(o.out);
+  ASSERT_EQ(lines.size(), 1u) << o.out;
+  const auto& ways = lines[0]["alternatives"];
+  ASSERT_EQ(ways.size(), 2u) << o.out;
+  const auto isZero = [](const nlohmann::json& way) {
+    for (int k = 0; k < 3; ++k)
+      if (way["lo"][k].get<double>() != 0.0 || way["hi"][k].get<double>() != 0.0) return false;
+    return true;
+  };
+  ASSERT_NE(isZero(ways[0]), isZero(ways[1])) << o.out;
+  const auto& ray = isZero(ways[0]) ? ways[1] : ways[0];
+  const std::array<double, 3> mixed = {0.0, ray["value"][1].get<double>(),
+                                       ray["value"][2].get<double>()};
+  const auto inside = [&](const nlohmann::json& way) {
+    for (int k = 0; k < 3; ++k)
+      if (mixed[k] < way["lo"][k].get<double>() || mixed[k] > way["hi"][k].get<double>())
+        return false;
+    return true;
+  };
+  EXPECT_TRUE(inside(lines[0])) << "the box of the ways holds the mix";
+  EXPECT_FALSE(inside(ways[0]));
+  EXPECT_FALSE(inside(ways[1]));
 }
 
 TEST(Cli, EvalMalformedLineNamesItsNumberAndOthersAreAnswered) {

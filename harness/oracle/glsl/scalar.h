@@ -10,6 +10,7 @@
 #include <span>
 #include <type_traits>
 
+#include "oracle/glsl/double_double.h"
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"
 #include "oracle/precision_rules.h"
@@ -79,6 +80,13 @@ T sumOfProducts(std::span<const T> a, std::span<const T> b) {
   T sum = a[0] * b[0];
   for (std::size_t i = 1; i < a.size(); ++i) sum = sum + a[i] * b[i];
   return sum;
+}
+// The reference value: exact products summed in double-double, so that a
+// dot product of nearly perpendicular vectors keeps its digits.
+inline double sumOfProducts(std::span<const double> a, std::span<const double> b) {
+  DoubleDouble sum;
+  for (std::size_t i = 0; i < a.size(); ++i) sum = sum + twoProduct(a[i], b[i]);
+  return toDouble(sum);
 }
 
 // Whether a value is one the spec leaves open.

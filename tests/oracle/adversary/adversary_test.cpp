@@ -1,0 +1,166 @@
+// The standing proof that the oracle is sound: the adversarial machine
+// (adversarial_machine.h) makes every choice the precision rules allow, on
+// random and edge inputs, for the built-ins the catalog uses and for every
+// catalog listing, under the GLSL and the Vulkan rules; every vector it
+// returns must fit one of the oracle's alternatives whole. Then, that the
+// machine really reaches the choices it claims to make, so that a clean
+// run means something.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <set>
+
+#include "adversary/adversarial_machine.h"
+#include "adversary/adversary_check.h"
+#include "adversary/adversary_inputs.h"
+#include "oracle/glsl/glsl.h"
+#include "oracle/vertex_oracle.h"
+
+namespace snell::adversary {
+namespace {
+
+constexpr PrecisionRules kRules[] = {PrecisionRules::Glsl, PrecisionRules::Vulkan};
+
+void expectNoEscape(const Tally& tally, const char* what) {
+  std::printf("%s: %llu machine evaluations, %llu escapes\n", what,
+              static_cast<unsigned long long>(tally.evaluations),
+              static_cast<unsigned long long>(tally.escapes));
+  for (const std::string& e : tally.firstEscapes) ADD_FAILURE() << e;
+  EXPECT_EQ(tally.escapes, 0u);
+  EXPECT_GT(tally.evaluations, 0u);
+}
+
+TEST(Adversary, BuiltinsStayInsideTheOracle) {
+  Tally tally;
+  Rng rng(0x5eed0001);
+  for (PrecisionRules rules : kRules)
+    for (Formula f : kAllFormulas)
+      for (int input = 0; input < 1500; ++input)
+        checkFormula(f, formulaInputs(f, rng), rules, 8, rng.next(), tally);
+  expectNoEscape(tally, "built-ins");
+}
+
+TEST(Adversary, CatalogListingsStayInsideTheOracle) {
+  Tally tally;
+  Rng rng(0x5eed0002);
+  for (PrecisionRules rules : kRules)
+    for (const ListingInputs& listing : catalogListings())
+      checkListing(sampleVertices(listing, 24, rng), rules, 6, rng.next(), tally);
+  expectNoEscape(tally, "catalog listings");
+}
+
+TEST(Adversary, EveryRegisteredListingRunsOnTheMachine) {
+  std::set<std::string> covered;
+  for (const ListingInputs& listing : catalogListings()) covered.insert(listing.oracle);
+  for (const std::string& name : vertexOracleNames()) {
+    EXPECT_TRUE(covered.count(name)) << name << " has no catalog manifest to draw inputs from";
+    const auto machine = machineListings();
+    EXPECT_NE(std::find(machine.begin(), machine.end(), name), machine.end())
+        << name << " has no machine run";
+  }
+}
+
+TEST(Adversary, AVectorMustFitOneWayWhole) {
+  // Two ways, as near the critical angle: the zero vector or a ray.
+  const std::vector<std::vector<Interval>> ways = {
+      {Interval(0.0, 0.0), Interval(0.0, 0.0)},
+      {Interval(0.5, 0.6), Interval(-0.2, -0.1)},
+  };
+  EXPECT_TRUE(fitsOneWay(ways, std::vector<float>{0.0f, 0.0f}));
+  EXPECT_TRUE(fitsOneWay(ways, std::vector<float>{0.55f, -0.15f}));
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{0.0f, -0.15f})) << "a mix of the two";
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{0.55f, -0.25f})) << "outside the ray's y";
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_FALSE(fitsOneWay(ways, std::vector<float>{nan, nan})) << "NaN where the spec says a value";
+  const std::vector<std::vector<Interval>> open = {{Interval::unconstrained(), Interval(1.0, 1.0)}};
+  EXPECT_TRUE(fitsOneWay(open, std::vector<float>{nan, 1.0f}));
+  EXPECT_FALSE(fitsOneWay(open, std::vector<float>{nan, 2.0f}));
+}
+
+// The values the machine returns for f over many runs.
+template <class F>
+std::set<float> spread(F f, PrecisionRules rules = PrecisionRules::Glsl, int runs = 2000) {
+  std::set<float> values;
+  const UsePrecisionRules use(rules);
+  for (int run = 0; run < runs; ++run) {
+    Machine::begin(0x1000 + static_cast<std::uint64_t>(run), rules);
+    values.insert(f().value());
+  }
+  return values;
+}
+
+TEST(Adversary, MachineRoundsEitherWayAndFuses) {
+  // 1 + 2^-30 is no float: either neighbour. a*b+c with a*b inexact: the
+  // fused result differs from both roundings of the rounded product.
+  const auto sum = spread([] { return Adv(1.0f) + Adv(0x1p-30f); });
+  EXPECT_EQ(sum, (std::set<float>{1.0f, std::nextafter(1.0f, 2.0f)}));
+  const float a = 1.0f + 0x1p-12f, c = -1.0f - 0x1p-11f;
+  const auto fma = spread([&] { return Adv(a) * Adv(a) + Adv(c); });
+  EXPECT_TRUE(fma.count(0x1p-24f)) << "fused: a*a + c exactly";
+  EXPECT_TRUE(fma.count(0.0f)) << "rounded product first";
+}
+
+TEST(Adversary, MachineRegroupsProductsAndSums) {
+  // (x*y)*z and x*(y*z) round differently for these; so do (1 + e) - 1
+  // as written and 1 - 1 + e regrouped.
+  const float x = 1.0f + 0x1p-23f, y = 1.0f + 0x1p-22f, z = 3.0f;
+  const auto product = spread([&] { return Adv(x) * Adv(y) * Adv(z); });
+  EXPECT_GE(product.size(), 3u);
+  const auto sum = spread([] { return (Adv(1.0f) + Adv(0x1p-30f)) - Adv(1.0f); });
+  EXPECT_TRUE(sum.count(0x1p-30f)) << "regrouped";
+  EXPECT_TRUE(sum.count(0.0f)) << "as written, rounded down";
+}
+
+TEST(Adversary, MachineReachesTheEdgesOfAnUlpBound) {
+  // 1/3 within 2.5 ULP: the floats from 2 below to 2 above the nearest one.
+  const auto third = spread([] { return Adv(1.0f) / Adv(3.0f); });
+  const float nearest = 1.0f / 3.0f;
+  float lowest = nearest, highest = nearest;
+  for (int k = 0; k < 2; ++k) {
+    lowest = std::nextafter(lowest, 0.0f);
+    highest = std::nextafter(highest, 1.0f);
+  }
+  EXPECT_EQ(*third.begin(), lowest);
+  EXPECT_EQ(*third.rbegin(), highest);
+}
+
+TEST(Adversary, MachineFoldsConstantsEitherWay) {
+  // 0.66 * 0.66 folded in double from the decimals: either neighbour of 0.4356.
+  const auto folded = spread([] { return Adv::literal(0.66) * Adv::literal(0.66); });
+  EXPECT_TRUE(folded.count(static_cast<float>(floatAtOrBelow(0.4356))));
+  EXPECT_TRUE(folded.count(static_cast<float>(floatAtOrAbove(0.4356))));
+}
+
+TEST(Adversary, MachineFlushesDenormalsAndLeavesUndefinedOpen) {
+  const auto flushed = spread([] { return Adv(0x1p-140f) * Adv(1.0f); });
+  EXPECT_TRUE(flushed.count(0.0f));
+  EXPECT_TRUE(flushed.count(0x1p-140f));
+  const auto log0 = spread([] { return log2(Adv(0.0f)); }, PrecisionRules::Glsl, 10);
+  ASSERT_EQ(log0.size(), 1u);
+  EXPECT_TRUE(std::isnan(*log0.begin()));
+  EXPECT_EQ(spread([] { return sqrt(Adv(0.0f)); }), std::set<float>{0.0f});
+}
+
+TEST(Adversary, MachineTakesBothWaysNearTheCriticalAngle) {
+  // k = 1 - eta^2 (1 - d^2) within a few ULP of 0: some runs return the
+  // zero vector, others a refracted ray.
+  const float d = -0.7f;
+  const float s = std::sqrt(1.0f - d * d);
+  const float eta = 1.0f / s;
+  int zero = 0, ray = 0;
+  for (int run = 0; run < 2000; ++run) {
+    Machine::begin(0x2000 + static_cast<std::uint64_t>(run), PrecisionRules::Glsl);
+    const glsl::vec3<Adv> I(Adv(s), Adv(d), Adv(0.0f));
+    const glsl::vec3<Adv> N(Adv(0.0f), Adv(1.0f), Adv(0.0f));
+    const auto r = glsl::refract(I, N, Adv(eta));
+    (r[0].value() == 0.0f && r[1].value() == 0.0f ? zero : ray) += 1;
+  }
+  EXPECT_GT(zero, 0);
+  EXPECT_GT(ray, 0);
+}
+
+}  // namespace
+}  // namespace snell::adversary
