@@ -1,5 +1,6 @@
 #include "cli/suite_session.h"
 
+#include "cli/backend_options.h"
 #include "cli/commands.h"
 
 #include <fmt/format.h>
@@ -17,7 +18,9 @@
 #include "runner/case_runner.h"
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
+#include "runner/backend_probe.h"
 #include "runner/supervisor.h"
+#include "backends/backend_registry.h"
 
 namespace snell::cli {
 namespace {
@@ -72,11 +75,44 @@ void validateCases(const std::vector<Case>& cases, const std::string& shaders) {
 
 }  // namespace
 
+std::vector<std::string> workerBackendArgs(const SuiteOptions& options) {
+  std::vector<std::string> args;
+  if (!options.device.empty()) args.insert(args.end(), {"--device", options.device});
+  if (!options.glProvider.empty()) args.insert(args.end(), {"--gl-provider", options.glProvider});
+  return args;
+}
+
+std::vector<std::string> backendsToRun(const SuiteOptions& options) {
+  const bool all = options.backend == "all";
+  std::vector<std::string> wanted;
+  if (all) {
+    for (const BackendEntry& e : backendRegistry().entries())
+      if (e.inAll) wanted.push_back(e.name);
+  } else {
+    for (const std::string& name : splitBackendList(options.backend))
+      wanted.push_back(backendRegistry().find(name).name);
+  }
+  const std::vector<BackendProbe> probes =
+      probeBackends(fs::read_symlink("/proc/self/exe").string(), wanted, workerBackendArgs(options));
+  std::vector<std::string> up;
+  for (const BackendProbe& probe : probes) {
+    if (probe.up) {
+      up.push_back(probe.backend);
+      continue;
+    }
+    if (!all)
+      throw SetupError(fmt::format("backend {} cannot be brought up: {}", probe.backend,
+                                   probe.problem));
+    fmt::print(stderr, "snell: skipping {}: {}\n", probe.backend, probe.problem);
+  }
+  if (up.empty()) throw SetupError("no backend comes up on this machine (`snell devices`)");
+  return up;
+}
+
 void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   options.shaders = defaultShadersDir();
   options.golden = defaultGoldenDir();
-  sub.add_option("--backend", options.backend, "gl, vk or all")
-      ->check(CLI::IsMember({"gl", "vk", "all"}));
+  addBackendOptions(sub, options.backend, options.device, options.glProvider);
   sub.add_option("--filter", options.filter, "Only cases whose id matches this glob");
   sub.add_option("--shaders", options.shaders, "Folder of listings")->check(CLI::ExistingDirectory);
   sub.add_option("--golden", options.golden, "Folder of blessed goldens");
@@ -104,9 +140,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                                  onlyImageCases ? "image " : "", options.filter));
   validateCases(run.cases, options.shaders);
 
-  const std::vector<std::string> backends =
-      options.backend == "all" ? std::vector<std::string>{"gl", "vk"}
-                               : std::vector<std::string>{options.backend};
+  const std::vector<std::string> backends = backendsToRun(options);
   std::vector<Task> tasks;
   for (const std::string& backend : backends)
     for (const Case& c : run.cases)
@@ -119,6 +153,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   supervisor.executable = fs::read_symlink("/proc/self/exe").string();
   supervisor.shaders = fs::absolute(options.shaders).string();
   supervisor.validation = options.validation;
+  supervisor.backendArgs = workerBackendArgs(options);
   supervisor.outDir = fs::absolute(options.out).string();
   supervisor.goldenDir = compareGoldens ? fs::absolute(options.golden).string() : "";
   supervisor.jobs = options.jobs > 0

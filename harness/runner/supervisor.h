@@ -27,6 +27,7 @@ struct SupervisorOptions {
   std::string outDir;
   std::string goldenDir;  // empty: no golden comparison
   int jobs = 1;
+  std::vector<std::string> backendArgs;  // --device, --gl-provider: passed to every worker
 };
 
 using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;
