@@ -1,13 +1,16 @@
 #include "backends/gl/osmesa_context.h"
 
-// gl_api.h first: it asks GL/glext.h (included once) for the prototypes.
+// gl_api.h before GL/osmesa.h: it asks GL/glext.h (included once) for the
+// prototypes that gl_functions.h takes the types of.
+// clang-format off
+#include "backends/gl/gl_api.h"
 #include <GL/osmesa.h>
+// clang-format on
 
 #include <cstdlib>
 #include <utility>
 #include <vector>
 
-#include "backends/gl/gl_api.h"
 #include "backends/gl/shared_library.h"
 #include "core/errors.h"
 
