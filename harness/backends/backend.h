@@ -38,14 +38,14 @@ struct CompileDiagnostic {
 
 struct CompileOutcome {
   bool ok = false;
-  std::string log;  // compiler/linker diagnostics, empty when clean
+  std::string log;                             // compiler/linker diagnostics, empty when clean
   std::vector<CompileDiagnostic> diagnostics;  // the log's placed messages, parsed by the backend
 };
 
 struct CaptureJob {
   ProgramSource program;
-  UniformMap uniforms;          // by GLSL name; names the program lacks are ignored
-  AttributeMap attributes;      // by GLSL name
+  UniformMap uniforms;                // by GLSL name; names the program lacks are ignored
+  AttributeMap attributes;            // by GLSL name
   std::vector<std::string> varyings;  // vertex outputs to read back, in order
   std::size_t vertexCount = 0;
 };
@@ -61,9 +61,9 @@ struct CaptureOutcome {
 // visible point at NDC z in [0, 1], so both APIs' depth ranges agree.
 struct RenderJob {
   ProgramSource program;
-  UniformMap uniforms;                  // by GLSL name; names the program lacks are ignored
-  AttributeMap attributes;              // by GLSL name
-  std::vector<std::uint32_t> indices;   // triangle list, counter-clockwise front faces
+  UniformMap uniforms;                 // by GLSL name; names the program lacks are ignored
+  AttributeMap attributes;             // by GLSL name
+  std::vector<std::uint32_t> indices;  // triangle list, counter-clockwise front faces
   std::map<std::string, const CubeMap*> cubeMaps;  // samplerCube uniforms by GLSL name
   // sampler2D uniforms by GLSL name. Base level only, LINEAR filtering and
   // REPEAT wrapping in s and t (the CPU reference, oracle/reference/
@@ -81,16 +81,20 @@ struct RenderJob {
 };
 
 struct RenderOutcome {
-  CompileOutcome compile;  // !compile.ok => image is empty
-  Image image;             // width x height, row 0 at the top; the fragment shader's output 0
+  CompileOutcome compile;     // !compile.ok => image is empty
+  Image image;                // width x height, row 0 at the top; the fragment shader's output 0
   std::vector<Image> probes;  // one per RenderJob::probes, same layout; alpha 1 where written
 };
 
 class Backend {
  public:
   virtual ~Backend() = default;
-  virtual std::string name() const = 0;  // "gl" or "vk"
+  virtual std::string name() const = 0;  // its registered name: "gl", "gl:softpipe", "vk"
   virtual DriverInfo driverInfo() const = 0;
+
+  // "" when this backend can run the program; otherwise the reason it cannot
+  // (a GLSL version or profile its driver lacks), reported as NotSupported.
+  virtual std::string whyCannotRun(const ProgramSource& /*program*/) const { return ""; }
 
   // Compiles (and links) the program without running it.
   virtual CompileOutcome compile(const ProgramSource& program) = 0;
@@ -106,10 +110,16 @@ class Backend {
 
 struct BackendOptions {
   bool validation = false;  // Vulkan: enable VK_LAYER_KHRONOS_validation, any message is an error
+  // Vulkan: a physical device by name, index or vendor:device id (hex);
+  // EGL device backends: a device index. Empty: the backend's own choice.
+  std::string device = "";  // NOLINT(readability-redundant-string-init): keeps {.validation} quiet
+  // OpenGL: "osmesa" or "egl" in place of the backend's own context provider.
+  std::string glProvider = "";  // NOLINT(readability-redundant-string-init)
 };
 
-// "gl" or "vk"; throws UsageError for an unknown name, SetupError when the
-// API cannot be brought up on this machine.
+// A registered backend by name (backend_registry.h), with its environment
+// set first; throws UsageError for an unknown name, SetupError when the
+// driver cannot be brought up on this machine.
 std::unique_ptr<Backend> makeBackend(const std::string& name, const BackendOptions& options);
 
 }  // namespace snell

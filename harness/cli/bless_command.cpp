@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <map>
+#include <set>
 
 #include "cli/commands.h"
 #include "cli/suite_session.h"
@@ -11,6 +13,7 @@
 #include "compare/image_io.h"
 #include "core/errors.h"
 #include "golden/golden_store.h"
+#include "backends/backend_registry.h"
 #include "runner/image_check.h"
 
 namespace snell::cli {
@@ -59,16 +62,24 @@ int bless(const SuiteOptions& options) {
   std::map<std::string, const Case*> cases;
   for (const Case& c : suite.cases) cases[c.id] = &c;
   int refused = 0;
+  std::set<std::pair<std::string, std::string>> written;  // (case, golden key)
   for (const CaseResult& r : suite.results) {
     const Case& c = *cases.at(r.caseId);
+    const std::string key = backendRegistry().find(r.backend).goldenKey;
+    if (written.count({r.caseId, key})) {
+      fmt::print("{} {}: not blessed, its golden `{}` was written by another backend on the same "
+                 "driver in this run\n", r.backend, r.caseId, key);
+      continue;
+    }
     if (r.status != Status::Pass) {
       ++refused;
       fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status), r.message);
       continue;
     }
     const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));
-    const std::string change = describeChange(options.golden, c, r.backend, image);
-    writeGolden(options.golden, r.caseId, r.backend, image, metadataOf(r, c, image));
+    const std::string change = describeChange(options.golden, c, key, image);
+    writeGolden(options.golden, r.caseId, key, image, metadataOf(r, c, image));
+    written.insert({r.caseId, key});
     fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change);
   }
   return refused ? 1 : 0;

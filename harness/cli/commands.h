@@ -4,6 +4,8 @@
 // failed, 1 something failed, 2 usage or set-up error.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace snell::cli {
 
@@ -17,6 +19,11 @@ Command addBlessCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addReportCommand(CLI::App& app);
+Command addDevicesCommand(CLI::App& app);
+
+// Each registered backend: its renderer and versions, or why it does not
+// come up here (asked of worker processes). Returns 0.
+int printBackendDrivers(const std::vector<std::string>& workerArgs);
 
 // The repository's own listings and goldens, where the binary was built from.
 std::string defaultShadersDir();

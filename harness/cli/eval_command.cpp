@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "backends/backend.h"
+#include "backends/backend_registry.h"
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "runner/builtin_eval.h"
@@ -19,8 +20,16 @@ Command addEvalCommand(CLI::App& app) {
     std::string input = "-";
   };
   auto options = std::make_shared<Options>();
-  eval->add_option("--backend", options->backend, "oracle, gl or vk")
-      ->check(CLI::IsMember({"oracle", "gl", "vk"}));
+  eval->add_option("--backend", options->backend, "oracle, or a backend (`snell devices`)")
+      ->check([](const std::string& value) -> std::string {
+        if (value == "oracle") return "";
+        try {
+          backendRegistry().find(value);
+        } catch (const UsageError& error) {
+          return error.what();
+        }
+        return "";
+      });
   eval->add_option("--rules", options->rules,
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
                    "is judged by its own API's")

@@ -11,12 +11,15 @@
 int main(int argc, char** argv) {
   CLI::App app{"snell: runs published reflection/refraction GLSL listings on OpenGL and Vulkan "
                "and holds the results against a spec-derived CPU oracle"};
-  app.require_subcommand(1);
+  bool version = false, drivers = false;
+  app.add_flag("--version", version, "Print snell's version and exit");
+  app.add_flag("--drivers", drivers, "With --version: each backend's renderer and versions");
+  app.require_subcommand(0, 1);
   std::map<const CLI::App*, snell::cli::Command> commands;
   for (auto add : {snell::cli::addRunCommand, snell::cli::addListCommand,
                    snell::cli::addEvalCommand, snell::cli::addBlessCommand, snell::cli::addMergeCommand,
                    snell::cli::addCompareCommand, snell::cli::addReportCommand,
-                   snell::cli::addWorkerCommand}) {
+                   snell::cli::addWorkerCommand, snell::cli::addDevicesCommand}) {
     const std::size_t before = app.get_subcommands({}).size();
     snell::cli::Command run = add(app);
     commands[app.get_subcommands({}).at(before)] = std::move(run);
@@ -32,6 +35,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
+    if (version) {
+      fmt::print("snell {}\n", SNELL_VERSION);
+      return drivers ? snell::cli::printBackendDrivers({}) : 0;
+    }
+    if (app.get_subcommands().empty()) {
+      fmt::print(stderr, "snell: name a command (snell --help lists them)\n");
+      return 2;
+    }
     for (const auto& [sub, run] : commands)
       if (sub->parsed()) return run();
   } catch (const snell::UsageError& error) {

@@ -1,5 +1,6 @@
 #include "cli/suite_session.h"
 
+#include "cli/backend_options.h"
 #include "cli/commands.h"
 
 #include <fmt/format.h>
@@ -23,16 +24,51 @@
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/interrupt_flag.h"
+#include "runner/backend_probe.h"
 #include "runner/supervisor.h"
+#include "backends/backend_registry.h"
 
 namespace snell::cli {
 namespace fs = std::filesystem;
 
+std::vector<std::string> workerBackendArgs(const SuiteOptions& options) {
+  std::vector<std::string> args;
+  if (!options.device.empty()) args.insert(args.end(), {"--device", options.device});
+  if (!options.glProvider.empty()) args.insert(args.end(), {"--gl-provider", options.glProvider});
+  return args;
+}
+
+std::vector<std::string> backendsToRun(const SuiteOptions& options) {
+  const bool all = options.backend == "all";
+  std::vector<std::string> wanted;
+  if (all) {
+    for (const BackendEntry& e : backendRegistry().entries())
+      if (e.inAll) wanted.push_back(e.name);
+  } else {
+    for (const std::string& name : splitBackendList(options.backend))
+      wanted.push_back(backendRegistry().find(name).name);
+  }
+  const std::vector<BackendProbe> probes =
+      probeBackends(fs::read_symlink("/proc/self/exe").string(), wanted, workerBackendArgs(options));
+  std::vector<std::string> up;
+  for (const BackendProbe& probe : probes) {
+    if (probe.up) {
+      up.push_back(probe.backend);
+      continue;
+    }
+    if (!all)
+      throw SetupError(fmt::format("backend {} cannot be brought up: {}", probe.backend,
+                                   probe.problem));
+    fmt::print(stderr, "snell: skipping {}: {}\n", probe.backend, probe.problem);
+  }
+  if (up.empty()) throw SetupError("no backend comes up on this machine (`snell devices`)");
+  return up;
+}
+
 void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   options.shaders = defaultShadersDir();
   options.golden = defaultGoldenDir();
-  sub.add_option("--backend", options.backend, "gl, vk or all")
-      ->check(CLI::IsMember({"gl", "vk", "all"}));
+  addBackendOptions(sub, options.backend, options.device, options.glProvider);
   sub.add_option("--filter", options.filter, "Only cases whose id matches this glob");
   sub.add_option("--shaders", options.shaders, "Folder of listings")
       ->check(CLI::ExistingDirectory)
@@ -69,9 +105,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     run.cases = std::move(mine);
   }
 
-  const std::vector<std::string> backends =
-      options.backend == "all" ? std::vector<std::string>{"gl", "vk"}
-                               : std::vector<std::string>{options.backend};
+  const std::vector<std::string> backends = backendsToRun(options);
   if (!options.expectations.empty())
     run.expectations = loadExpectations(options.expectations, backends, todayUtc());
   std::map<std::string, CaseResult> resumed;
@@ -110,6 +144,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   supervisor.executable = fs::read_symlink("/proc/self/exe").string();
   supervisor.shaders = fs::absolute(options.shaders).string();
   supervisor.validation = options.validation;
+  supervisor.backendArgs = workerBackendArgs(options);
   supervisor.outDir = fs::absolute(options.out).string();
   supervisor.goldenDir = compareGoldens ? fs::absolute(options.golden).string() : "";
   supervisor.jobs = options.jobs > 0

@@ -13,7 +13,11 @@
 namespace snell::cli {
 
 struct SuiteOptions {
-  std::string backend = "all";
+  // Registered names joined by commas, or all. The default is the drivers
+  // whose goldens the repository keeps.
+  std::string backend = "gl,vk";
+  std::string device;           // --device, passed to every worker
+  std::string glProvider;       // --gl-provider, passed to every worker
   std::string filter;
   std::string shaders;
   std::string golden;
@@ -28,6 +32,15 @@ struct SuiteOptions {
   std::string shard;         // I/N
   std::string resume;        // results file of an interrupted run
 };
+
+// The backends a run asks for, each known to come up: probed in worker
+// processes (runner/backend_probe.h). A named backend whose driver does not
+// come up is one SetupError (exit 2), not a crash per case; `all` skips it
+// with a note on stderr.
+std::vector<std::string> backendsToRun(const SuiteOptions& options);
+
+// --device and --gl-provider as worker arguments.
+std::vector<std::string> workerBackendArgs(const SuiteOptions& options);
 
 struct SuiteRun {
   std::vector<Manifest> manifests;

@@ -8,11 +8,13 @@ Command addWorkerCommand(CLI::App& app) {
       "worker", "Internal: run cases named on standard input on one backend (started by `run`)");
   sub->group("");  // not listed in --help: users run `snell run`
   auto options = std::make_shared<WorkerOptions>();
-  sub->add_option("--backend", options->backend, "gl or vk")
-      ->required()
-      ->check(CLI::IsMember({"gl", "vk"}));
+  sub->add_option("--backend", options->backend, "A registered backend")->required();
   sub->add_option("--shaders", options->shaders, "Folder of listings")->required();
   sub->add_flag("--validation", options->validation, "Vulkan validation layer");
+  sub->add_option("--device", options->device, "As `run --device`");
+  sub->add_option("--gl-provider", options->glProvider, "As `run --gl-provider`");
+  sub->add_flag("--describe", options->describe,
+                "Bring the backend up, print its driver as JSON and exit");
   sub->add_option("--out", options->outDir, "Folder for images, heat maps and masks")->required();
   sub->add_option("--golden", options->goldenDir, "Folder of goldens; empty for none")->required();
   return [options] { return runWorker(*options); };

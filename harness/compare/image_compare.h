@@ -20,7 +20,7 @@ enum class ImageVerdict { Pass, Warn, Fail };
 const char* imageVerdictName(ImageVerdict verdict);
 
 struct ImageComparison {
-  std::string against;  // "reference", "golden", "other-api"
+  std::string against;  // "reference", "golden", "other-backend:A/B"
   ImageVerdict verdict = ImageVerdict::Pass;
   double maxError = 0, meanError = 0, rmsError = 0, psnr = 0;
   int maxX = 0, maxY = 0;

@@ -7,16 +7,25 @@
 #include <sstream>
 
 #include "compare/image_io.h"
-#include "core/errors.h"
 #include "core/atomic_file.h"
+#include "core/errors.h"
 
 namespace snell {
 
 namespace fs = std::filesystem;
 
-GoldenFiles goldenFiles(const fs::path& root, const std::string& caseId, const std::string& backend) {
+GoldenFiles goldenFiles(const fs::path& root, const std::string& caseId,
+                        const std::string& backend) {
   const fs::path dir = root / caseId;
   return {dir / (backend + ".exr"), dir / (backend + ".png"), dir / (backend + ".json")};
+}
+
+bool hasAnyGolden(const fs::path& root, const std::string& backend) {
+  std::error_code error;
+  for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
+       it.increment(error))
+    if (it->path().filename() == backend + ".exr") return true;
+  return false;
 }
 
 Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
@@ -58,7 +67,7 @@ void writeGolden(const fs::path& root, const std::string& caseId, const std::str
 std::string cpuFeatures() {
   // The flags that change llvmpipe's vector width and instruction choice.
   static const std::set<std::string> kRelevant = {"sse4_1", "sse4_2", "avx",     "avx2",
-                                                   "fma",    "f16c",   "avx512f", "avx512bw"};
+                                                  "fma",    "f16c",   "avx512f", "avx512bw"};
   std::ifstream in("/proc/cpuinfo");
   for (std::string line; std::getline(in, line);) {
     if (line.rfind("flags", 0) != 0) continue;

@@ -22,6 +22,10 @@ struct Golden {
   nlohmann::json metadata;
 };
 
+// Whether any case has a golden under `backend` (a backend's golden key): a
+// driver with none yet starts from "no golden yet", not from failures.
+bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend);
+
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
 // truncated, wrong size) and what to do (`snell bless --filter ...`).
 Golden readGolden(const std::filesystem::path& root, const std::string& caseId,

@@ -16,6 +16,12 @@
 namespace snell {
 namespace {
 
+// The key manifests use for an API: "gl" or "vk".
+std::string apiKey(const DriverInfo& driver) {
+  return precisionRulesForApi(driver.api) == PrecisionRules::Vulkan ? "vk" : "gl";
+}
+
+
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -64,9 +70,16 @@ CaseResult CaseRunner::run(const Case& c) {
   result.sourceWhere = m.source.where;
   result.driver = driver_;
 
-  if (const auto reason = m.notSupported.find(backend_.name()); reason != m.notSupported.end()) {
+  // Manifests name the API (gl, vk), whichever of its drivers runs the case.
+  if (const auto reason = m.notSupported.find(apiKey(driver_)); reason != m.notSupported.end()) {
     result.status = Status::NotSupported;
     result.message = reason->second;
+    result.seconds = secondsSince(start);
+    return result;
+  }
+  if (std::string why = backend_.whyCannotRun(loadProgram(m)); !why.empty()) {
+    result.status = Status::NotSupported;
+    result.message = why;
     result.seconds = secondsSince(start);
     return result;
   }
@@ -135,7 +148,7 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
                      (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
     return;
   }
-  const auto pinned = m.expectedErrors.find(precisionRulesForApi(driver_.api) == PrecisionRules::Vulkan ? "vk" : "gl");
+  const auto pinned = m.expectedErrors.find(apiKey(driver_));
   if (pinned == m.expectedErrors.end()) {
     result.status = Status::ExpectedCompileError;
     result.message = "does not compile, as expected:\n" + outcome.log;
@@ -219,6 +232,7 @@ void CaseRunner::runImage(const Case& c, const ResolvedBindings& bindings, CaseR
                     comparison.maxError, comparison.maxX, comparison.maxY, comparison.failed,
                     comparison.compared, c.spec.image.fail);
   }
+  if (!check.goldenNote.empty()) result.message += check.goldenNote + "\n";
   if (!check.goldenProblem.empty()) {
     result.status = worstOf(result.status, Status::Fail);
     result.message += check.goldenProblem + "\n";

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <map>
+#include <vector>
 
 #include "compare/image_io.h"
 #include "core/errors.h"
@@ -14,35 +15,43 @@ void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path
                      std::vector<CaseResult>& results) {
   std::map<std::string, std::map<std::string, CaseResult*>> byCase;
   for (CaseResult& r : results) byCase[r.caseId][r.backend] = &r;
+  const auto renderedAndWithinSpec = [](const CaseResult& r) {
+    return r.status == Status::Pass || r.status == Status::QualityWarning;
+  };
   for (const Case& c : cases) {
     if (!c.spec.has("image")) continue;
-    auto& pair = byCase[c.id];
-    if (!pair.count("gl") || !pair.count("vk")) continue;
-    CaseResult& gl = *pair["gl"];
-    CaseResult& vk = *pair["vk"];
-    const auto renderedAndWithinSpec = [](const CaseResult& r) {
-      return r.status == Status::Pass || r.status == Status::QualityWarning;
-    };
-    if (!renderedAndWithinSpec(gl) || !renderedAndWithinSpec(vk)) continue;
-    ImageComparison comparison;
-    try {
-      comparison = compareImages("other-api", readImage(renderedImagePath(outDir, c.id, "vk")),
-                                 readImage(renderedImagePath(outDir, c.id, "gl")),
-                                 maskFromImage(readImage(maskImagePath(outDir, c.id))), c.spec.image);
-    } catch (const UsageError& error) {
-      comparison.against = "other-api";
-      comparison.verdict = ImageVerdict::Fail;
-      comparison.problem = error.what();
-    }
-    for (CaseResult* r : {&gl, &vk}) {
-      r->images.push_back(comparison);
-      if (comparison.verdict == ImageVerdict::Pass) continue;
-      r->status = worstOf(r->status, Status::CompatibilityWarning);
-      r->message += fmt::format("OpenGL and Vulkan differ: max error {:.6g} at ({}, {}), {} of {} "
-                                "pixels over {}{}\n",
-                                comparison.maxError, comparison.maxX, comparison.maxY,
-                                comparison.failed, comparison.compared, c.spec.image.fail,
-                                comparison.problem.empty() ? "" : " (" + comparison.problem + ")");
+    // Chosen before any pair is compared: a warning from one pair must not
+    // keep a backend out of the next.
+    std::vector<CaseResult*> ran;  // by backend name, so pairs come in a fixed order
+    for (const auto& [backend, result] : byCase[c.id])
+      if (renderedAndWithinSpec(*result)) ran.push_back(result);
+    for (std::size_t i = 0; i < ran.size(); ++i) {
+      for (std::size_t j = i + 1; j < ran.size(); ++j) {
+        CaseResult& a = *ran[i];
+        CaseResult& b = *ran[j];
+        ImageComparison comparison;
+        const std::string against = "other-backend:" + a.backend + "/" + b.backend;
+        try {
+          comparison =
+              compareImages(against, readImage(renderedImagePath(outDir, c.id, b.backend)),
+                            readImage(renderedImagePath(outDir, c.id, a.backend)),
+                            maskFromImage(readImage(maskImagePath(outDir, c.id))), c.spec.image);
+        } catch (const UsageError& error) {
+          comparison.against = against;
+          comparison.verdict = ImageVerdict::Fail;
+          comparison.problem = error.what();
+        }
+        for (CaseResult* r : {&a, &b}) {
+          r->images.push_back(comparison);
+          if (comparison.verdict == ImageVerdict::Pass) continue;
+          r->status = worstOf(r->status, Status::CompatibilityWarning);
+          r->message += fmt::format(
+              "{} and {} differ: max error {:.6g} at ({}, {}), {} of {} pixels over {}{}\n",
+              a.backend, b.backend, comparison.maxError, comparison.maxX, comparison.maxY,
+              comparison.failed, comparison.compared, c.spec.image.fail,
+              comparison.problem.empty() ? "" : " (" + comparison.problem + ")");
+        }
+      }
     }
   }
 }

@@ -1,8 +1,8 @@
 #pragma once
-// OpenGL against Vulkan, once both have rendered a case: is the listing
-// portable? Two images that are each within spec of the reference but
-// differ from each other beyond the warn threshold make both results
-// CompatibilityWarning.
+// Every pair of backends that rendered a case, once all have: is the
+// listing portable (OpenGL against Vulkan), and do drivers of one API agree?
+// Two images that are each within spec of the reference but differ from
+// each other beyond the warn threshold make both results CompatibilityWarning.
 #include <filesystem>
 #include <vector>
 
@@ -11,8 +11,8 @@
 
 namespace snell {
 
-// Adds an "other-api" comparison to every pair of gl/vk results of an image
-// case whose images were both written to `outDir`.
+// Adds an "other-backend:A/B" comparison to both results of every pair of
+// backends that rendered an image case into `outDir`.
 void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path& outDir,
                      std::vector<CaseResult>& results);
 

@@ -104,9 +104,15 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                          reference.mask, c.spec.image.fail);
   check.comparisons.push_back(std::move(vsReference));
 
-  if (!options.goldenDir.empty()) {
+  const std::string goldenKey = options.goldenKey.empty() ? name : options.goldenKey;
+  if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey)) {
+    check.goldenNote = fmt::format(
+        "no golden yet for this driver (key `{}`): the CPU reference gates it; `snell bless "
+        "--backend {}` writes its goldens",
+        goldenKey, name);
+  } else if (!options.goldenDir.empty()) {
     try {
-      const Golden golden = readGolden(options.goldenDir, c.id, name, scene.width, scene.height);
+      const Golden golden = readGolden(options.goldenDir, c.id, goldenKey, scene.width, scene.height);
       ImageComparison vsGolden =
           compareImages("golden", outcome.image, golden.image, reference.mask, c.spec.image);
       writeDifferenceHeatMap(dir / (name + "-vs-golden.png"), outcome.image, golden.image,

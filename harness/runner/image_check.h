@@ -18,6 +18,7 @@ namespace snell {
 struct ImageCheckOptions {
   std::filesystem::path outDir;     // where images, heat maps and masks are written
   std::filesystem::path goldenDir;  // empty: no golden comparison (bless runs)
+  std::string goldenKey = "";  // NOLINT(readability-redundant-string-init): the backend's golden key; empty: its name
 };
 
 class ReferenceCache {
@@ -33,6 +34,7 @@ struct ImageCheck {
   std::string compileLog;
   std::vector<ImageComparison> comparisons;  // reference, then golden
   std::string goldenProblem;                 // a missing or unreadable golden
+  std::string goldenNote;                    // no golden yet for this driver: not a failure
 };
 
 // The samplerCube uniforms a manifest binds to the scene's environment.

@@ -80,6 +80,7 @@ class Supervision {
                                        "--shaders", options_.shaders};
       if (options_.validation) argv.push_back("--validation");
       argv.insert(argv.end(), {"--out", options_.outDir, "--golden", options_.goldenDir});
+      argv.insert(argv.end(), options_.backendArgs.begin(), options_.backendArgs.end());
       slot.worker = std::make_unique<WorkerProcess>(argv);
       slot.backend = task.backend;
     }

@@ -31,6 +31,7 @@ struct SupervisorOptions {
   // When it becomes non-zero (a signal arrived), the workers are stopped and
   // only the finished results are returned.
   const volatile std::sig_atomic_t* stop = nullptr;
+  std::vector<std::string> backendArgs;  // --device, --gl-provider: passed to every worker
 };
 
 using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;

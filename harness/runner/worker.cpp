@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "backends/backend.h"
+#include "backends/backend_registry.h"
 #include "core/case.h"
 #include "core/errors.h"
 #include "core/scene_file.h"
@@ -16,7 +17,28 @@
 
 namespace snell {
 
+namespace {
+BackendOptions backendOptions(const WorkerOptions& options) {
+  return {
+      .validation = options.validation, .device = options.device, .glProvider = options.glProvider};
+}
+}  // namespace
+
+nlohmann::json driverJson(const DriverInfo& d) {
+  return {{"api", d.api},
+          {"api_version", d.apiVersion},
+          {"renderer", d.renderer},
+          {"driver_version", d.driverVersion},
+          {"device_type", d.deviceType}};
+}
+
 int runWorker(const WorkerOptions& options) {
+  const BackendEntry& entry = backendRegistry().find(options.backend);
+  if (options.describe) {
+    const std::unique_ptr<Backend> backend = makeBackend(entry.name, backendOptions(options));
+    std::cout << driverJson(backend->driverInfo()).dump() << std::endl;
+    return 0;
+  }
   const std::vector<Manifest> manifests = loadManifests(options.shaders);
   const std::vector<Case> cases = expandCases(manifests, "");
   std::map<std::string, const Case*> byId;
@@ -32,9 +54,10 @@ int runWorker(const WorkerOptions& options) {
     if (it == byId.end()) throw UsageError(fmt::format("worker: no case `{}`", id));
     validateCase(*it->second, scenes);  // the same step the supervisor ran
     if (!backend) {
-      backend = makeBackend(options.backend, BackendOptions{.validation = options.validation});
-      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
-                                            ImageCheckOptions{options.outDir, options.goldenDir});
+      backend = makeBackend(entry.name, backendOptions(options));
+      runner = std::make_unique<CaseRunner>(
+          *backend, oracles, scenes, references,
+          ImageCheckOptions{options.outDir, options.goldenDir, entry.goldenKey});
     }
     std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
   }

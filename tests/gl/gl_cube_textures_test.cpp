@@ -1,11 +1,12 @@
 // A suite renders many cases against one environment: each is uploaded once
 // per context, and again only when its texels change.
+#include "backends/gl/gl_cube_textures.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "backends/gl/gl_cube_textures.h"
-#include "backends/gl/osmesa_context.h"
+#include "backends/gl/gl_context_provider.h"
 #include "gl_render_test_jobs.h"
 
 namespace snell {
@@ -13,8 +14,10 @@ namespace {
 
 // Declared before the textures, so it outlives them: they are deleted on it.
 struct CurrentContext {
-  CurrentContext() : context(OsmesaContext::create(Profile::Core)) { context.makeCurrent(); }
-  OsmesaContext context;
+  CurrentContext() : context(createGlContext(GlProviderKind::Osmesa, {})) {
+    context->makeCurrent();
+  }
+  std::unique_ptr<GlContext> context;
 };
 
 TEST(GlCubeTextures, SameEnvironmentIsUploadedOnce) {

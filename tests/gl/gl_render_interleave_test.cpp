@@ -2,8 +2,7 @@
 // puts back what the other relies on, so they interleave in any order.
 #include <gtest/gtest.h>
 
-#include <GL/osmesa.h>
-
+#include "backends/gl/gl_api.h"
 #include "backends/gl/gl_backend.h"
 #include "core/errors.h"
 #include "gl_render_test_jobs.h"
@@ -31,7 +30,7 @@ CaptureJob reflectJob() {
 
 // The backend's context is current after its calls; these read it.
 void expectCaptureStateIntact() {
-  ASSERT_NE(OSMesaGetCurrentContext(), nullptr);
+  ASSERT_NE(currentGlFunctions, nullptr);
   EXPECT_EQ(glIsEnabled(GL_RASTERIZER_DISCARD), GL_FALSE);
   EXPECT_EQ(glIsEnabled(GL_DEPTH_TEST), GL_FALSE);
   EXPECT_EQ(glIsEnabled(GL_CULL_FACE), GL_FALSE);
@@ -65,13 +64,15 @@ TEST(GlRenderInterleave, TwentyCaptureRenderPairsGiveIdenticalResults) {
     // Odd rounds render first, so calls of each kind follow both kinds.
     const bool renderFirst = round % 2 != 0;
     if (renderFirst) {
-      EXPECT_EQ(backend->render(render).image.pixels, firstRender.image.pixels) << "round " << round;
+      EXPECT_EQ(backend->render(render).image.pixels, firstRender.image.pixels)
+          << "round " << round;
     }
     EXPECT_EQ(backend->captureVertexOutputs(capture).varyings.at(0).data,
               firstCapture.varyings.at(0).data)
         << "round " << round;
     if (!renderFirst) {
-      EXPECT_EQ(backend->render(render).image.pixels, firstRender.image.pixels) << "round " << round;
+      EXPECT_EQ(backend->render(render).image.pixels, firstRender.image.pixels)
+          << "round " << round;
     }
     expectCaptureStateIntact();
   }

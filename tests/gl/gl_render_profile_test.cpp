@@ -2,8 +2,7 @@
 // the compatibility context.
 #include <gtest/gtest.h>
 
-#include <GL/osmesa.h>
-
+#include "backends/gl/gl_api.h"
 #include "backends/gl/gl_backend.h"
 #include "gl_render_test_jobs.h"
 

@@ -2,13 +2,13 @@
 // promises for RenderJob::textures2D: image.at(i, j) covers s in
 // [i/width, (i+1)/width] and t in [j/height, (j+1)/height], LINEAR
 // filtering, REPEAT wrapping, texture units after the cube maps.
-#include <GL/osmesa.h>
 #include <gtest/gtest.h>
 
 #include <array>
 #include <stdexcept>
 #include <string>
 
+#include "backends/gl/gl_api.h"
 #include "backends/gl/gl_backend.h"
 #include "core/errors.h"
 #include "gl_render_test_jobs.h"
@@ -138,7 +138,7 @@ void main() { FragColor = texture(Tex, coord) + texture(Env, dir); }
              {texel[0] + cube[0], texel[1] + cube[1], texel[2] + cube[2], texel[3] + cube[3]},
              "2D texel (2, 1) plus +Z centre");
   // The render puts back no texture bound, on any unit it used.
-  ASSERT_NE(OSMesaGetCurrentContext(), nullptr);
+  ASSERT_NE(currentGlFunctions, nullptr);
   for (int unit = 0; unit < 2; ++unit) {
     glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
     GLint bound2D = -1, boundCube = -1;

@@ -2,8 +2,7 @@
 // framebuffer (images, fragment-stage vectors) is not silently discarded.
 #include <gtest/gtest.h>
 
-#include <GL/osmesa.h>
-
+#include "backends/gl/gl_api.h"
 #include "backends/gl/gl_backend.h"
 #include "core/errors.h"
 #include "gl_test_jobs.h"
@@ -27,7 +26,7 @@ CaptureJob job() {
 // The backend's core context is the current one after its calls; these
 // queries read that context.
 void expectRestored() {
-  ASSERT_NE(OSMesaGetCurrentContext(), nullptr);
+  ASSERT_NE(currentGlFunctions, nullptr);
   EXPECT_EQ(glIsEnabled(GL_RASTERIZER_DISCARD), GL_FALSE);
   GLint program = -1;
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);

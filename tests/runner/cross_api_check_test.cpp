@@ -1,5 +1,6 @@
-// OpenGL against Vulkan: two images that differ beyond the warn threshold
-// make both results CompatibilityWarning; equal images leave them Pass.
+// Backend against backend (OpenGL against Vulkan, driver against driver):
+// two images that differ beyond the warn threshold make both results
+// CompatibilityWarning; equal images leave them Pass.
 #include "runner/cross_api_check.h"
 
 #include <gtest/gtest.h>
@@ -54,7 +55,7 @@ TEST_F(CrossApi, EqualImagesStayPass) {
   for (const CaseResult& r : run()) {
     EXPECT_EQ(r.status, Status::Pass);
     ASSERT_EQ(r.images.size(), 1u);
-    EXPECT_EQ(r.images[0].against, "other-api");
+    EXPECT_EQ(r.images[0].against, "other-backend:gl/vk");
   }
 }
 
@@ -62,7 +63,7 @@ TEST_F(CrossApi, OnePixelBeyondWarnIsACompatibilityWarningOnBoth) {
   vk_.at(2, 1)[0] += 0.003f;
   for (const CaseResult& r : run()) {
     EXPECT_EQ(r.status, Status::CompatibilityWarning) << r.backend;
-    EXPECT_NE(r.message.find("OpenGL and Vulkan differ"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("gl and vk differ"), std::string::npos) << r.message;
   }
 }
 
@@ -76,6 +77,29 @@ TEST_F(CrossApi, AMissingImageIsReportedNotIgnored) {
   checkAcrossApis(cases_, out_, results);
   EXPECT_EQ(results[0].status, Status::CompatibilityWarning);
   EXPECT_FALSE(results[0].images.at(0).problem.empty());
+}
+
+// Three backends make three pairs: each result is held against the two
+// others, and only the pairs with the odd image out warn.
+TEST_F(CrossApi, EveryPairOfBackendsIsCompared) {
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
+  Image odd = gl_;
+  odd.pixels[0] = 0.9f;
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl:softpipe"), odd);
+  std::vector<CaseResult> results(3);
+  for (CaseResult& r : results) r.caseId = "a/sphere";
+  results[0].backend = "gl";
+  results[1].backend = "gl:softpipe";
+  results[2].backend = "vk";
+  checkAcrossApis(cases_, out_, results);
+  for (const CaseResult& r : results) ASSERT_EQ(r.images.size(), 2u) << r.backend;
+  EXPECT_EQ(results[0].status, Status::CompatibilityWarning);  // against gl:softpipe
+  EXPECT_EQ(results[1].status, Status::CompatibilityWarning);
+  EXPECT_EQ(results[2].status, Status::CompatibilityWarning);  // against gl:softpipe
+  EXPECT_NE(results[1].message.find("gl and gl:softpipe differ"), std::string::npos)
+      << results[1].message;
+  EXPECT_EQ(results[0].message.find("gl and vk differ"), std::string::npos) << results[0].message;
 }
 
 }  // namespace

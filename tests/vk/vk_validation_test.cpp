@@ -42,7 +42,7 @@ TEST(VkValidation, LogQuotesEveryMessageOnceThenEmpties) {
 
 TEST(VkValidation, AnInvalidCallBecomesASetupErrorQuotingTheLayer) {
   VulkanInstance instance(true);
-  VulkanDevice device(instance);
+  VulkanDevice device(instance, "");
   ASSERT_NO_THROW(instance.validationLog().throwIfAny("start-up"));
 
   // A zero-sized buffer breaks VUID-VkBufferCreateInfo-size-00912; the layer

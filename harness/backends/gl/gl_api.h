@@ -1,5 +1,11 @@
 #pragma once
-// The one place the GL and OSMesa headers come in. GL_GLEXT_PROTOTYPES (set
-// by the target) makes glext.h declare the GL 3.x/4.x entry points that
-// libOSMesa exports directly, so no loader is needed.
-#include <GL/osmesa.h>  // includes GL/gl.h, which includes GL/glext.h
+// The one place the GL headers come in. The prototypes are declared only
+// so that gl_functions.h can take each entry point's type; every call goes
+// through the table the context provider loaded (no GL library is linked).
+#ifndef GL_GLEXT_PROTOTYPES
+#define GL_GLEXT_PROTOTYPES 1
+#endif
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include "backends/gl/gl_functions.h"

@@ -2,6 +2,7 @@
 
 #include <iterator>
 #include <memory>
+#include <utility>
 
 #include "backends/gl/gl_context_state.h"
 #include "backends/gl/gl_driver_info.h"
@@ -15,13 +16,20 @@ namespace {
 // serves legacy listings, so it is made on first use.
 class GlBackend final : public Backend {
  public:
-  GlBackend() : core_(Profile::Core) {
+  explicit GlBackend(GlBackendConfig config)
+      : config_(std::move(config)),
+        core_(createGlContext(config_.provider, request(Profile::Core))) {
     core_.makeCurrent();
     info_ = queryGlDriverInfo();
   }
 
-  std::string name() const override { return "gl"; }
+  std::string name() const override { return config_.name; }
   DriverInfo driverInfo() const override { return info_; }
+
+  std::string whyCannotRun(const ProgramSource& program) const override {
+    return whyBackendCannotRun(config_.capabilities, glslVersionOf(program.vertex),
+                               program.profile == Profile::Compatibility);
+  }
 
   CompileOutcome compile(const ProgramSource& program) override {
     stateFor(program.profile);
@@ -65,11 +73,19 @@ class GlBackend final : public Backend {
       core_.makeCurrent();
       return core_;
     }
-    if (!compatibility_) compatibility_ = std::make_unique<GlContextState>(Profile::Compatibility);
+    if (!compatibility_)
+      compatibility_ = std::make_unique<GlContextState>(
+          createGlContext(config_.provider, request(Profile::Compatibility)));
     compatibility_->makeCurrent();
     return *compatibility_;
   }
 
+  GlContextRequest request(Profile profile) const {
+    return {profile, config_.capabilities.coreVersion / 10, config_.capabilities.coreVersion % 10,
+            config_.device};
+  }
+
+  GlBackendConfig config_;
   GlContextState core_;
   std::unique_ptr<GlContextState> compatibility_;
   DriverInfo info_;
@@ -77,10 +93,8 @@ class GlBackend final : public Backend {
 
 }  // namespace
 
-// BackendOptions::validation is a Vulkan layer switch; GL has nothing to
-// turn on, since every GL call here is already checked with glGetError.
-std::unique_ptr<Backend> makeGlBackend(const BackendOptions& /*options*/) {
-  return std::make_unique<GlBackend>();
+std::unique_ptr<Backend> makeGlBackend(const GlBackendConfig& config) {
+  return std::make_unique<GlBackend>(config);
 }
 
 }  // namespace snell

@@ -1,9 +1,23 @@
 #pragma once
 #include <memory>
+#include <string>
 
 #include "backends/backend.h"
+#include "backends/backend_registry.h"
+#include "backends/gl/gl_context_provider.h"
 
 namespace snell {
-// OpenGL through OSMesa (llvmpipe, or softpipe with GALLIUM_DRIVER=softpipe).
-std::unique_ptr<Backend> makeGlBackend(const BackendOptions& options);
+
+// OpenGL on whichever driver the provider and the environment select.
+struct GlBackendConfig {
+  std::string name = "gl";  // the registered name
+  GlProviderKind provider = GlProviderKind::Osmesa;
+  // coreVersion is the core version asked for (3.3 is the fallback).
+  BackendCapabilities capabilities{
+      "OpenGL", 45, 450, true, {"vertex", "fragment"}, {"transform-feedback", "fragment-probes"}};
+  std::string device;  // EglDevice: the device index
+};
+
+std::unique_ptr<Backend> makeGlBackend(const GlBackendConfig& config);
+
 }  // namespace snell

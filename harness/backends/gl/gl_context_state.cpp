@@ -2,8 +2,8 @@
 
 namespace snell {
 
-GlContextState::GlContextState(Profile profile) : context_(OsmesaContext::create(profile)) {
-  context_.makeCurrent();
+GlContextState::GlContextState(std::unique_ptr<GlContext> context) : context_(std::move(context)) {
+  context_->makeCurrent();
   programs_ = std::make_unique<GlProgramCache>();
   inputs_ = std::make_unique<GlVertexInputs>();
   capture_ = std::make_unique<GlVertexCapture>(*inputs_);
@@ -13,7 +13,7 @@ GlContextState::GlContextState(Profile profile) : context_(OsmesaContext::create
 GlContextState::~GlContextState() {
   // Another backend may have made its own context current since.
   try {
-    context_.makeCurrent();
+    context_->makeCurrent();
   } catch (...) {
     return;  // objects die with the context anyway
   }

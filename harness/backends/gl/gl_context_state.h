@@ -6,7 +6,7 @@
 #include "backends/gl/gl_renderer.h"
 #include "backends/gl/gl_vertex_capture.h"
 #include "backends/gl/gl_vertex_inputs.h"
-#include "backends/gl/osmesa_context.h"
+#include "backends/gl/gl_context_provider.h"
 
 namespace snell {
 
@@ -16,18 +16,18 @@ namespace snell {
 // it current for the objects' deletion.
 class GlContextState {
  public:
-  explicit GlContextState(Profile profile);
+  explicit GlContextState(std::unique_ptr<GlContext> context);
   GlContextState(const GlContextState&) = delete;
   GlContextState& operator=(const GlContextState&) = delete;
   ~GlContextState();
 
-  void makeCurrent() { context_.makeCurrent(); }
+  void makeCurrent() { context_->makeCurrent(); }
   GlProgramCache& programs() { return *programs_; }
   GlVertexCapture& capture() { return *capture_; }
   GlRenderer& renderer() { return *renderer_; }
 
  private:
-  OsmesaContext context_;
+  std::unique_ptr<GlContext> context_;
   std::unique_ptr<GlProgramCache> programs_;
   std::unique_ptr<GlVertexInputs> inputs_;
   std::unique_ptr<GlVertexCapture> capture_;

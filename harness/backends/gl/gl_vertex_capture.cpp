@@ -13,15 +13,17 @@ namespace {
 // Undoes what a capture changed, whichever way it leaves.
 class CaptureStateGuard {
  public:
-  CaptureStateGuard(GLuint program, GLuint vertexArray) {
+  CaptureStateGuard(GLuint program, GLuint vertexArray, GLuint framebuffer) {
     glUseProgram(program);
     glBindVertexArray(vertexArray);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   }
   CaptureStateGuard(const CaptureStateGuard&) = delete;
   CaptureStateGuard& operator=(const CaptureStateGuard&) = delete;
   ~CaptureStateGuard() {
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
     glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glBindVertexArray(0);
     glUseProgram(0);
   }
@@ -63,7 +65,7 @@ std::vector<CapturedVarying> GlVertexCapture::run(GlLinkedProgram& program,
     return program.varyings.split({}, 0);
   }
 
-  CaptureStateGuard guard(program.program.id(), inputs_.vertexArray());
+  CaptureStateGuard guard(program.program.id(), inputs_.vertexArray(), target_.id());
   program.uniforms.apply(job.uniforms);
   throwOnGlError("glUniform*");
   separateSamplerUnits(program.uniforms);

@@ -3,6 +3,7 @@
 
 #include "backends/backend.h"
 #include "backends/gl/gl_api.h"
+#include "backends/gl/gl_framebuffer.h"
 #include "backends/gl/gl_program_cache.h"
 #include "backends/gl/gl_vertex_inputs.h"
 
@@ -29,6 +30,10 @@ class GlVertexCapture {
   std::vector<float> drawAndRead(const GlLinkedProgram& program, std::size_t vertexCount);
 
   GlVertexInputs& inputs_;
+  // Bound while capturing: an EGL surfaceless context has no default
+  // framebuffer, and a draw needs a complete one even with rasterisation
+  // discarded. Used under OSMesa too, so both take the same path.
+  GlFramebuffer target_{1, 1, 1};
   GLuint feedbackBuffer_ = 0;
   GLuint primitivesQuery_ = 0;
 };

@@ -1,8 +1,17 @@
 #include "backends/gl/osmesa_context.h"
 
+// gl_api.h before GL/osmesa.h: it asks GL/glext.h (included once) for the
+// prototypes that gl_functions.h takes the types of.
+// clang-format off
+#include "backends/gl/gl_api.h"
+#include <GL/osmesa.h>
+// clang-format on
+
 #include <cstdlib>
 #include <utility>
+#include <vector>
 
+#include "backends/gl/shared_library.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -11,9 +20,49 @@ namespace {
 constexpr int kBufferSide = 4;
 
 const char* const kInstallHint =
-    " Install Mesa's off-screen GL (Debian: apt-get install libosmesa6 libosmesa6-dev),"
-    " check that GALLIUM_DRIVER is unset, llvmpipe or softpipe, and that the program"
-    " links libOSMesa only (not libGL as well).";
+    " Install Mesa's off-screen GL (Debian: apt-get install libosmesa6), and check that"
+    " GALLIUM_DRIVER is unset, llvmpipe or softpipe.";
+
+// The OSMesa entry points, and the GL table loaded through it once.
+struct OsmesaLibrary {
+  SharedLibrary library;
+  decltype(&::OSMesaCreateContextAttribs) createContextAttribs;
+  decltype(&::OSMesaMakeCurrent) makeCurrent;
+  decltype(&::OSMesaGetCurrentContext) getCurrentContext;
+  decltype(&::OSMesaDestroyContext) destroyContext;
+  decltype(&::OSMesaGetProcAddress) getProcAddress;
+  GlFunctions gl;
+  bool glLoaded = false;
+
+  template <typename F>
+  F load(const char* name) const {
+    void* address = library.symbol(name);
+    if (!address)
+      throw SetupError(library.fileName() + " has no " + name + ": not an OSMesa library." +
+                       kInstallHint);
+    return reinterpret_cast<F>(address);
+  }
+
+  explicit OsmesaLibrary(SharedLibrary lib)
+      : library(std::move(lib)),
+        createContextAttribs(load<decltype(createContextAttribs)>("OSMesaCreateContextAttribs")),
+        makeCurrent(load<decltype(makeCurrent)>("OSMesaMakeCurrent")),
+        getCurrentContext(load<decltype(getCurrentContext)>("OSMesaGetCurrentContext")),
+        destroyContext(load<decltype(destroyContext)>("OSMesaDestroyContext")),
+        getProcAddress(load<decltype(getProcAddress)>("OSMesaGetProcAddress")) {}
+};
+
+OsmesaLibrary& osmesa() {
+  static OsmesaLibrary library(
+      SharedLibrary::open({"libOSMesa.so.8", "libOSMesa.so"}, kInstallHint));
+  return library;
+}
+
+void* lookupGl(const char* name, void* userData) {
+  auto& lib = *static_cast<OsmesaLibrary*>(userData);
+  if (OSMESAproc address = lib.getProcAddress(name)) return reinterpret_cast<void*>(address);
+  return lib.library.symbol(name);  // libOSMesa exports every gl* entry point too
+}
 
 std::string galliumDriver() {
   const char* driver = std::getenv("GALLIUM_DRIVER");
@@ -27,70 +76,88 @@ void checkGalliumDriver() {
   const std::string driver = galliumDriver();
   if (driver.empty() || driver == "llvmpipe" || driver == "softpipe") return;
   throw SetupError("GALLIUM_DRIVER=" + driver +
-                   " is not a driver OSMesa offers: unset it, or set llvmpipe or softpipe.");
+                   " is not a driver OSMesa offers: unset it, set llvmpipe or softpipe, or use"
+                   " --gl-provider egl.");
 }
 
 OSMesaContext createCore(int major, int minor) {
-  const int attributes[] = {OSMESA_FORMAT,  OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS, 0,
-                            OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, major,
-                            OSMESA_CONTEXT_MINOR_VERSION, minor,
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            0,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            major,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            minor,
                             0};
-  return OSMesaCreateContextAttribs(attributes, nullptr);
+  return osmesa().createContextAttribs(attributes, nullptr);
 }
 
 OSMesaContext createCompatibility() {
-  const int attributes[] = {OSMESA_FORMAT,  OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS, 0,
-                            OSMESA_PROFILE, OSMESA_COMPAT_PROFILE,
-                            0};
-  return OSMesaCreateContextAttribs(attributes, nullptr);
+  const int attributes[] = {
+      OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0, OSMESA_PROFILE, OSMESA_COMPAT_PROFILE, 0};
+  return osmesa().createContextAttribs(attributes, nullptr);
 }
+
+// The small colour buffer OSMesaMakeCurrent needs; pixels are read from
+// framebuffer objects, never from it.
+class OsmesaContext final : public GlContext {
+ public:
+  OsmesaContext(OSMesaContext handle, std::string what)
+      : handle_(handle), what_(std::move(what)), colour_(kBufferSide * kBufferSide * 4) {}
+  OsmesaContext(const OsmesaContext&) = delete;
+  OsmesaContext& operator=(const OsmesaContext&) = delete;
+  ~OsmesaContext() override {
+    OsmesaLibrary& lib = osmesa();
+    if (lib.getCurrentContext() == handle_) lib.makeCurrent(nullptr, nullptr, 0, 0, 0);
+    lib.destroyContext(handle_);
+  }
+
+  void makeCurrent() override {
+    OsmesaLibrary& lib = osmesa();
+    if ((!wasMadeCurrentLast() || lib.getCurrentContext() != handle_) &&
+        !lib.makeCurrent(handle_, colour_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide))
+      throw SetupError("OSMesaMakeCurrent failed for the " + what_ + " context." + kInstallHint);
+    if (!lib.glLoaded) {
+      lib.gl = loadGlFunctions(lookupGl, &lib, "OSMesa");
+      lib.glLoaded = true;
+    }
+    currentGlFunctions = &lib.gl;
+    madeCurrent();
+  }
+
+  std::string what() const override { return what_; }
+
+ private:
+  OSMesaContext handle_;
+  std::string what_;
+  std::vector<unsigned char> colour_;
+};
 }  // namespace
 
-OsmesaContext OsmesaContext::create(Profile profile) {
+std::unique_ptr<GlContext> createOsmesaContext(const GlContextRequest& request) {
   checkGalliumDriver();
-  if (profile == Profile::Compatibility) {
+  if (request.profile == Profile::Compatibility) {
     OSMesaContext handle = createCompatibility();
     if (!handle)
       throw SetupError(std::string("OSMesa could not create an OpenGL compatibility context.") +
                        kInstallHint);
-    return OsmesaContext(handle, "OpenGL compatibility");
+    return std::make_unique<OsmesaContext>(handle, "OpenGL compatibility (OSMesa)");
   }
-  // softpipe stops at 3.3 core; asking it for 4.5 just fails.
-  if (galliumDriver() != "softpipe") {
-    if (OSMesaContext handle = createCore(4, 5)) return OsmesaContext(handle, "OpenGL 4.5 core");
+  const bool above33 = request.coreMajor * 10 + request.coreMinor > 33;
+  if (above33) {
+    if (OSMesaContext handle = createCore(request.coreMajor, request.coreMinor))
+      return std::make_unique<OsmesaContext>(handle, "OpenGL " + std::to_string(request.coreMajor) +
+                                                         "." + std::to_string(request.coreMinor) +
+                                                         " core (OSMesa)");
   }
-  if (OSMesaContext handle = createCore(3, 3)) return OsmesaContext(handle, "OpenGL 3.3 core");
-  throw SetupError(
-      std::string("OSMesa could not create an OpenGL core context (asked for 4.5, then 3.3).") +
-      kInstallHint);
-}
-
-OsmesaContext::OsmesaContext(OSMesaContext handle, std::string what)
-    : handle_(handle), what_(std::move(what)), colour_(kBufferSide * kBufferSide * 4) {}
-
-OsmesaContext::OsmesaContext(OsmesaContext&& other) noexcept
-    : handle_(std::exchange(other.handle_, nullptr)),
-      what_(std::move(other.what_)),
-      colour_(std::move(other.colour_)) {}
-
-OsmesaContext::~OsmesaContext() {
-  if (!handle_) return;
-  if (OSMesaGetCurrentContext() == handle_) OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
-  OSMesaDestroyContext(handle_);
-}
-
-void OsmesaContext::makeCurrent() {
-  if (OSMesaGetCurrentContext() == handle_) return;
-  if (!OSMesaMakeCurrent(handle_, colour_.data(), GL_UNSIGNED_BYTE, kBufferSide, kBufferSide))
-    throw SetupError("OSMesaMakeCurrent failed for the " + what_ + " context." + kInstallHint);
-  // With libGL linked next to libOSMesa, GL calls go to libGL's dispatch,
-  // which has no context: every query returns NULL instead of failing.
-  if (!glGetString(GL_VERSION))
-    throw SetupError("glGetString(GL_VERSION) returned NULL on a current " + what_ +
-                     " context: link libOSMesa only, never libGL as well.");
+  if (OSMesaContext handle = createCore(3, 3))
+    return std::make_unique<OsmesaContext>(handle, "OpenGL 3.3 core (OSMesa)");
+  throw SetupError(std::string("OSMesa could not create an OpenGL core context (asked for ") +
+                   std::to_string(request.coreMajor) + "." + std::to_string(request.coreMinor) +
+                   (above33 ? ", then 3.3)." : ").") + kInstallHint);
 }
 
 }  // namespace snell

@@ -58,16 +58,19 @@ VulkanProgram withProbeLocations(const VulkanProgram& compiled, const ProgramSou
   VulkanProgram placed = compiled;
   if (!placed.ok) return placed;
   OutputLocationResult result = assignProbeOutputLocations(placed.fragmentSpirv);
-  if (!result.ok()) throw SetupError(source.fragmentPath + ": placing the probe outputs: " + result.error);
+  if (!result.ok())
+    throw SetupError(source.fragmentPath + ": placing the probe outputs: " + result.error);
   placed.fragmentSpirv = std::move(result.spirv);
   return placed;
 }
 
 class VkBackend final : public Backend {
  public:
-  explicit VkBackend(const BackendOptions& options)
-      : instance_(options.validation),
-        device_(instance_),
+  VkBackend(std::string name, bool lavapipeByDefault, const std::string& device,
+            const BackendOptions& options)
+      : name_(std::move(name)),
+        instance_(options.validation, lavapipeByDefault),
+        device_(instance_, device),
         captureRunner_(device_),
         renderRunner_(device_),
         programs_(kCachedPrograms),
@@ -76,7 +79,7 @@ class VkBackend final : public Backend {
     instance_.validationLog().throwIfAny("Vulkan start-up");
   }
 
-  std::string name() const override { return "vk"; }
+  std::string name() const override { return name_; }
   DriverInfo driverInfo() const override { return device_.driverInfo(); }
 
   CompileOutcome compile(const ProgramSource& program) override {
@@ -262,6 +265,7 @@ class VkBackend final : public Backend {
   }
 
   // Declared in the order they are built; destroyed in reverse.
+  std::string name_;
   VulkanInstance instance_;
   VulkanDevice device_;
   CaptureRunner captureRunner_;
@@ -273,8 +277,13 @@ class VkBackend final : public Backend {
 
 }  // namespace
 
+std::unique_ptr<Backend> makeVkBackend(const std::string& name, bool lavapipeByDefault,
+                                       const std::string& device, const BackendOptions& options) {
+  return std::make_unique<VkBackend>(name, lavapipeByDefault, device, options);
+}
+
 std::unique_ptr<Backend> makeVkBackend(const BackendOptions& options) {
-  return std::make_unique<VkBackend>(options);
+  return makeVkBackend("vk", true, options.device, options);
 }
 
 }  // namespace snell

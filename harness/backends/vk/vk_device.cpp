@@ -1,5 +1,8 @@
 #include "backends/vk/vk_device.h"
 
+#include <fmt/format.h>
+
+#include <cctype>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -120,9 +123,49 @@ std::string hexFlags(std::uint32_t flags) {
   return text;
 }
 
+// Whether `wanted` (see the constructor) names the device at `index`.
+bool matches(const std::string& wanted, std::uint32_t index, const VkPhysicalDeviceProperties& p) {
+  if (wanted.empty()) return true;
+  if (wanted == "gpu") return p.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU;
+  if (wanted.find_first_not_of("0123456789") == std::string::npos)
+    return std::stoul(wanted) == index;
+  unsigned vendor = 0, device = 0;
+  char rest = 0;
+  if (std::sscanf(wanted.c_str(), "%x:%x%c", &vendor, &device, &rest) == 2)
+    return vendor == p.vendorID && device == p.deviceID;
+  std::string name = p.deviceName, lowerWanted = wanted;
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : lowerWanted) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return name.find(lowerWanted) != std::string::npos;
+}
+
 }  // namespace
 
-VulkanDevice::VulkanDevice(const VulkanInstance& instance) {
+std::vector<PhysicalDeviceSummary> listPhysicalDevices() {
+  const VulkanInstance instance(false, false);
+  std::uint32_t count = 0;
+  check(vkEnumeratePhysicalDevices(instance.handle(), &count, nullptr),
+        "vkEnumeratePhysicalDevices");
+  std::vector<VkPhysicalDevice> devices(count);
+  check(vkEnumeratePhysicalDevices(instance.handle(), &count, devices.data()),
+        "vkEnumeratePhysicalDevices");
+  std::vector<PhysicalDeviceSummary> out;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    VkPhysicalDeviceTransformFeedbackPropertiesEXT xfb{};
+    const DriverInfo info = describe(devices[i], xfb);
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(devices[i], &properties);
+    const std::string missing = whatIsMissing(devices[i]);
+    out.push_back(
+        {static_cast<int>(i), info.renderer,
+         fmt::format("{}, {}, Vulkan {}, id {:04x}:{:04x}{}", info.deviceType, info.driverVersion,
+                     info.apiVersion, properties.vendorID, properties.deviceID,
+                     missing.empty() ? "" : ", cannot capture: lacks " + missing)});
+  }
+  return out;
+}
+
+VulkanDevice::VulkanDevice(const VulkanInstance& instance, const std::string& wanted) {
   std::uint32_t count = 0;
   check(vkEnumeratePhysicalDevices(instance.handle(), &count, nullptr),
         "vkEnumeratePhysicalDevices");
@@ -134,18 +177,26 @@ VulkanDevice::VulkanDevice(const VulkanInstance& instance) {
                      "): install mesa-vulkan-drivers for lavapipe, or set VK_DRIVER_FILES to your "
                      "driver's ICD JSON file");
   }
-  std::string rejected;
+  std::string rejected, seen;
   for (std::uint32_t i = 0; i < count && !physical_; ++i) {
+    VkPhysicalDeviceProperties properties{};
+    vkGetPhysicalDeviceProperties(devices[i], &properties);
+    seen += fmt::format("{}{}: {} ({:04x}:{:04x})", seen.empty() ? "" : ", ", i,
+                        properties.deviceName, properties.vendorID, properties.deviceID);
+    if (!matches(wanted, i, properties)) continue;
     const std::string missing = whatIsMissing(devices[i]);
     if (missing.empty()) {
       physical_ = devices[i];
       continue;
     }
-    VkPhysicalDeviceProperties properties{};
-    vkGetPhysicalDeviceProperties(devices[i], &properties);
     rejected +=
         std::string(rejected.empty() ? "" : "; ") + properties.deviceName + " lacks " + missing;
   }
+  if (!physical_ && rejected.empty())
+    throw SetupError(fmt::format(
+        "no Vulkan device matches {} among {} ({}): pass --device with an "
+        "index, a vendor:device id or part of a name (`snell devices`)",
+        wanted == "gpu" ? "a GPU" : "--device " + wanted, seen, describeDriverSelection()));
   if (!physical_) {
     throw SetupError("no Vulkan device can capture vertex outputs (" + rejected +
                      "): install mesa-vulkan-drivers (lavapipe has VK_EXT_transform_feedback) or "

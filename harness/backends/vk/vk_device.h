@@ -1,4 +1,6 @@
 #pragma once
+#include <string>
+#include <vector>
 // The one logical device a backend uses: the first physical device with
 // VK_EXT_transform_feedback, a graphics queue, and what the capture code
 // needs to know about it.
@@ -17,10 +19,21 @@ struct TransformFeedbackCommands {
   PFN_vkCmdEndTransformFeedbackEXT end = nullptr;
 };
 
+struct PhysicalDeviceSummary {
+  int index = 0;
+  std::string name;    // deviceName
+  std::string detail;  // type, driver, API version, vendor:device id, what it lacks
+};
+
+// Every physical device every installed ICD offers (VK_DRIVER_FILES as set).
+std::vector<PhysicalDeviceSummary> listPhysicalDevices();
+
 class VulkanDevice {
  public:
+  // `wanted`: a physical device by index, vendor:device id (hex) or a part
+  // of its name; "gpu" the first that is not a CPU; "" the first usable.
   // Throws SetupError naming the devices seen and what each one lacks.
-  explicit VulkanDevice(const VulkanInstance& instance);
+  VulkanDevice(const VulkanInstance& instance, const std::string& wanted);
   ~VulkanDevice();
   VulkanDevice(const VulkanDevice&) = delete;
   VulkanDevice& operator=(const VulkanDevice&) = delete;

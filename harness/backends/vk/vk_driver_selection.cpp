@@ -18,6 +18,8 @@ std::string describeDriverSelection() {
     return std::string("VK_DRIVER_FILES=") + files;
   if (const char* icds = std::getenv("VK_ICD_FILENAMES"))
     return std::string("VK_ICD_FILENAMES=") + icds;
+  std::error_code ignored;
+  if (std::filesystem::exists(kLavapipeManifest, ignored)) return "every installed ICD";
   return std::string("VK_DRIVER_FILES unset and ") + kLavapipeManifest + " missing";
 }
 

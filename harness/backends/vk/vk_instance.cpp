@@ -58,8 +58,8 @@ std::string noDriverHint() {
 
 }  // namespace
 
-VulkanInstance::VulkanInstance(bool validation) {
-  selectLavapipeUnlessOverridden();
+VulkanInstance::VulkanInstance(bool validation, bool lavapipeByDefault) {
+  if (lavapipeByDefault) selectLavapipeUnlessOverridden();
 
   std::uint32_t loaderVersion = VK_API_VERSION_1_0;
   if (vkEnumerateInstanceVersion(&loaderVersion) != VK_SUCCESS ||

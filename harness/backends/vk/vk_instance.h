@@ -12,7 +12,9 @@ namespace snell::vk {
 class VulkanInstance {
  public:
   // Throws SetupError saying what to install or set when Vulkan cannot start.
-  explicit VulkanInstance(bool validation);
+  // `lavapipeByDefault`: point the loader at lavapipe unless the user named
+  // a driver (vk_driver_selection.h); off, the loader sees every ICD.
+  explicit VulkanInstance(bool validation, bool lavapipeByDefault = true);
   ~VulkanInstance();
   VulkanInstance(const VulkanInstance&) = delete;
   VulkanInstance& operator=(const VulkanInstance&) = delete;

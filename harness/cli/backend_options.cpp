@@ -1,0 +1,54 @@
+#include "cli/backend_options.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <sstream>
+
+#include "backends/backend_registry.h"
+#include "core/errors.h"
+
+namespace snell::cli {
+
+std::vector<std::string> splitBackendList(const std::string& list) {
+  std::vector<std::string> names;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');)
+    if (!name.empty()) names.push_back(name);
+  return names;
+}
+
+std::string describeBackends() {
+  std::string text;
+  for (const BackendEntry& e : backendRegistry().entries())
+    text += fmt::format("  {:<16} {}\n", e.name, e.description);
+  return text;
+}
+
+void addBackendOptions(CLI::App& sub, std::string& backend, std::string& device,
+                       std::string& glProvider) {
+  sub.add_option("--backend", backend,
+                 "Backends to run: names joined by commas, or all (every one that comes up "
+                 "here; `snell devices`)")
+      ->check([](const std::string& value) -> std::string {
+        if (value == "all") return "";
+        const std::vector<std::string> names = splitBackendList(value);
+        if (names.empty()) return "name at least one backend, or all";
+        for (const std::string& name : names) {
+          try {
+            backendRegistry().find(name);
+          } catch (const UsageError& error) {
+            return error.what();
+          }
+        }
+        return "";
+      });
+  sub.add_option("--device", device,
+                 "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
+                 "device backends (gl:gpu): a device index");
+  sub.add_option("--gl-provider", glProvider,
+                 "OpenGL context provider in place of each backend's own: osmesa or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+}
+
+}  // namespace snell::cli
