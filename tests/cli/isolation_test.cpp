@@ -65,7 +65,15 @@ std::vector<pid_t> workersOf(pid_t parent) {
     char state;
     pid_t ppid = 0;
     rest >> state >> ppid;
-    if (ppid == parent) workers.push_back(std::stoi(name));
+    if (ppid != parent || state == 'Z') continue;  // a reaped-to-be probe is no worker
+    // `worker --describe` only brings a driver up to see that it can: it is
+    // over before the cases start and runs none of them.
+    std::ifstream cmdline(entry.path() / "cmdline");
+    const std::string args((std::istreambuf_iterator<char>(cmdline)), {});
+    // An exiting process's cmdline reads empty: only a worker that says so counts.
+    if (args.find("worker") == std::string::npos || args.find("--describe") != std::string::npos)
+      continue;
+    workers.push_back(std::stoi(name));
   }
   return workers;
 }
