@@ -15,6 +15,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "snell_process.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -37,14 +39,10 @@ class DriverMatrix : public ::testing::Test {
   Outcome snell(const std::string& args, const std::string& env = "") {
     const fs::path json = dir_ / "results.jsonl";
     fs::remove(json);
-    const std::string command = fmt::format("{} {} {} 2>&1", env, SNELL_BINARY, args);
-    FILE* pipe = popen(command.c_str(), "r");
+    const snell::testing::Outcome run = snell::testing::runSnell(args, env);
     Outcome outcome;
-    std::array<char, 4096> buffer;
-    while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))
-      outcome.out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    outcome.code = run.code;
+    outcome.out = run.out;
     std::ifstream in(json);
     for (std::string line; std::getline(in, line);) {
       const nlohmann::json r = nlohmann::json::parse(line);

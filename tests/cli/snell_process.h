@@ -23,9 +23,10 @@ struct Outcome {
   std::string out;  // stdout and stderr together
 };
 
-// Runs `snell ARGS` through the shell and waits.
-inline Outcome runSnell(const std::string& args) {
-  FILE* pipe = popen(fmt::format("{} {} 2>&1", SNELL_BINARY, args).c_str(), "r");
+// Runs `ENV snell ARGS` through the shell and waits; `env` is a shell
+// prefix such as "GALLIUM_DRIVER=softpipe".
+inline Outcome runSnell(const std::string& args, const std::string& env = "") {
+  FILE* pipe = popen(fmt::format("{} {} {} 2>&1", env, SNELL_BINARY, args).c_str(), "r");
   Outcome outcome;
   std::array<char, 4096> buffer;
   while (std::size_t n = fread(buffer.data(), 1, buffer.size(), pipe))

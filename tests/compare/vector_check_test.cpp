@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include "compare/slack.h"
 
@@ -57,21 +58,26 @@ TEST(VectorCheck, FailsJustOutsideTheInterval) {
 
 // Twenty failing samples: the eight kept are the worst by slack, worst first,
 // and a failure repeated sample after sample is kept once.
-TEST(VectorCheck, KeepsTheWorstFailuresOnceEach) {
+// A float output exactly 0 with [-1, 1] allowed at every sample, read back
+// as `observed`.
+VaryingCheck checkAgainstZeroWithinOne(const std::vector<float>& observed) {
   OracleVarying e;
   e.name = "F";
   e.components = 1;
-  CapturedVarying got{"F", 1, {}};
-  for (int sample = 0; sample < 20; ++sample) {
-    e.reference.push_back(0.0);
-    e.lo.push_back(-1.0);
-    e.hi.push_back(1.0);
-    e.strict.push_back(0.0f);
-    e.undefined.push_back(0);
-    // Samples 0-9 all read 1.5 (the same failure); 10-19 read 2, 3, ... 11.
-    got.data.push_back(sample < 10 ? 1.5f : static_cast<float>(sample - 8));
-  }
-  const VaryingCheck check = checkVarying(e, got);
+  e.reference.assign(observed.size(), 0.0);
+  e.lo.assign(observed.size(), -1.0);
+  e.hi.assign(observed.size(), 1.0);
+  e.strict.assign(observed.size(), 0.0f);
+  e.undefined.assign(observed.size(), 0);
+  return checkVarying(e, CapturedVarying{"F", 1, observed});
+}
+
+TEST(VectorCheck, KeepsTheWorstFailuresOnceEach) {
+  // Samples 0-9 all read 1.5 (the same failure); 10-19 read 2, 3, ... 11.
+  std::vector<float> observed;
+  for (int sample = 0; sample < 20; ++sample)
+    observed.push_back(sample < 10 ? 1.5f : static_cast<float>(sample - 8));
+  const VaryingCheck check = checkAgainstZeroWithinOne(observed);
   EXPECT_EQ(check.failed, 20u);
   ASSERT_EQ(check.worstFailures.size(), VaryingCheck::kFailuresKept);
   for (std::size_t k = 0; k < check.worstFailures.size(); ++k)
@@ -80,19 +86,7 @@ TEST(VectorCheck, KeepsTheWorstFailuresOnceEach) {
 }
 
 TEST(VectorCheck, ARepeatedFailureIsKeptOnce) {
-  OracleVarying e;
-  e.name = "F";
-  e.components = 1;
-  CapturedVarying got{"F", 1, {}};
-  for (int sample = 0; sample < 5; ++sample) {
-    e.reference.push_back(0.0);
-    e.lo.push_back(-1.0);
-    e.hi.push_back(1.0);
-    e.strict.push_back(0.0f);
-    e.undefined.push_back(0);
-    got.data.push_back(sample == 3 ? 4.0f : 1.5f);
-  }
-  const VaryingCheck check = checkVarying(e, got);
+  const VaryingCheck check = checkAgainstZeroWithinOne({1.5f, 1.5f, 1.5f, 4.0f, 1.5f});
   ASSERT_EQ(check.worstFailures.size(), 2u);
   EXPECT_EQ(check.worstFailures[0].vertex, 3u);
   EXPECT_EQ(check.worstFailures[1].vertex, 0u);  // the first of the four alike
