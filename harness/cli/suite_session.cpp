@@ -1,8 +1,5 @@
 #include "cli/suite_session.h"
 
-#include "cli/backend_options.h"
-#include "cli/commands.h"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,22 +8,24 @@
 #include <optional>
 #include <thread>
 
+#include "backends/backend_registry.h"
 #include "baseline/expectation_file.h"
 #include "baseline/merge_results.h"
 #include "baseline/results_file.h"
 #include "baseline/shard.h"
+#include "cli/backend_options.h"
+#include "cli/commands.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/scene_file.h"
+#include "runner/backend_probe.h"
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
 #include "runner/case_validation.h"
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/interrupt_flag.h"
-#include "runner/backend_probe.h"
 #include "runner/supervisor.h"
-#include "backends/backend_registry.h"
 
 namespace snell::cli {
 namespace fs = std::filesystem;
@@ -36,6 +35,26 @@ std::vector<std::string> workerBackendArgs(const SuiteOptions& options) {
   if (!options.device.empty()) args.insert(args.end(), {"--device", options.device});
   if (!options.glProvider.empty()) args.insert(args.end(), {"--gl-provider", options.glProvider});
   return args;
+}
+
+namespace {
+// Quoted for a POSIX shell only where it needs to be.
+std::string shellWord(const std::string& word) {
+  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                              "0123456789_-./:=+,@") == std::string::npos)
+    return word;
+  std::string quoted = "'";
+  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+}  // namespace
+
+std::string userFolderFlags(const SuiteOptions& options) {
+  std::string flags;
+  if (options.shaders != defaultShadersDir()) flags += "--shaders " + shellWord(options.shaders);
+  if (options.golden != defaultGoldenDir())
+    flags += (flags.empty() ? "" : " ") + std::string("--golden ") + shellWord(options.golden);
+  return flags;
 }
 
 std::vector<std::string> backendsToRun(const SuiteOptions& options) {
@@ -48,8 +67,8 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options) {
     for (const std::string& name : splitBackendList(options.backend))
       wanted.push_back(backendRegistry().find(name).name);
   }
-  const std::vector<BackendProbe> probes =
-      probeBackends(fs::read_symlink("/proc/self/exe").string(), wanted, workerBackendArgs(options));
+  const std::vector<BackendProbe> probes = probeBackends(
+      fs::read_symlink("/proc/self/exe").string(), wanted, workerBackendArgs(options));
   std::vector<std::string> up;
   for (const BackendProbe& probe : probes) {
     if (probe.up) {
@@ -57,8 +76,8 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options) {
       continue;
     }
     if (!all)
-      throw SetupError(fmt::format("backend {} cannot be brought up: {}", probe.backend,
-                                   probe.problem));
+      throw SetupError(
+          fmt::format("backend {} cannot be brought up: {}", probe.backend, probe.problem));
     fmt::print(stderr, "snell: skipping {}: {}\n", probe.backend, probe.problem);
   }
   if (up.empty()) throw SetupError("no backend comes up on this machine (`snell devices`)");
@@ -76,14 +95,14 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   sub.add_option("--golden", options.golden, "Folder of blessed goldens")->capture_default_str();
   sub.add_option("--json", options.json, "Write results as JSON Lines, one object per case");
   sub.add_option("--out", options.out,
-                  "Folder for rendered images, heat maps and masks (default: snell-out)");
+                 "Folder for rendered images, heat maps and masks (default: snell-out)");
   sub.add_option("-j,--jobs", options.jobs, "Worker processes (default: one per core)")
       ->check(CLI::Range(1, 256));
   sub.add_option("--timeout", options.timeout,
-                  "Seconds a case may take before its worker is killed (default: the manifest's)")
+                 "Seconds a case may take before its worker is killed (default: the manifest's)")
       ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
   sub.add_flag("--validation", options.validation,
-                "Vulkan: run under the Khronos validation layer; any message fails the case");
+               "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
 
 SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compareGoldens) {
@@ -130,7 +149,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       }
       slotOfTask.push_back(slots.size());
       slots.emplace_back();
-      tasks.push_back({c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
+      tasks.push_back(
+          {c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
     }
   run.planned = slots.size();
 
@@ -145,6 +165,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   supervisor.shaders = fs::absolute(options.shaders).string();
   supervisor.validation = options.validation;
   supervisor.backendArgs = workerBackendArgs(options);
+  supervisor.blessFlags = userFolderFlags(options);
   supervisor.outDir = fs::absolute(options.out).string();
   supervisor.goldenDir = compareGoldens ? fs::absolute(options.golden).string() : "";
   supervisor.jobs = options.jobs > 0

@@ -42,6 +42,10 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options);
 // --device and --gl-provider as worker arguments.
 std::vector<std::string> workerBackendArgs(const SuiteOptions& options);
 
+// The user's --shaders and --golden as typed, where they are not the
+// defaults: what advice to run another command must repeat.
+std::string userFolderFlags(const SuiteOptions& options);
+
 struct SuiteRun {
   std::vector<Manifest> manifests;
   std::vector<Case> cases;

@@ -33,11 +33,9 @@ bool hasAnyGolden(const fs::path& root, const std::string& backend) {
 }
 
 Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
-                  int expectedWidth, int expectedHeight) {
+                  int expectedWidth, int expectedHeight, const std::string& blessCommand) {
   const GoldenFiles files = goldenFiles(root, caseId, backend);
-  const std::string hint =
-      fmt::format("check it, or bless a new one with `snell bless --backend {} --filter '{}'`",
-                  backend, caseId);
+  const std::string hint = fmt::format("check it, or bless a new one with `{}`", blessCommand);
   Golden golden;
   try {
     golden.image = readImage(files.image);

@@ -27,9 +27,11 @@ struct Golden {
 bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend);
 
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
-// truncated, wrong size) and what to do (`snell bless --filter ...`).
+// truncated, wrong size) and what to do: check it, or run `blessCommand`
+// (the caller's, since only it knows the flags the user ran with).
 Golden readGolden(const std::filesystem::path& root, const std::string& caseId,
-                  const std::string& backend, int expectedWidth, int expectedHeight);
+                  const std::string& backend, int expectedWidth, int expectedHeight,
+                  const std::string& blessCommand);
 
 // Writes the three files, each atomically (temporary file, then rename).
 void writeGolden(const std::filesystem::path& root, const std::string& caseId,

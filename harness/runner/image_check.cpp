@@ -32,9 +32,17 @@ const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
                                           const ResolvedBindings& bindings) {
   if (auto it = images_.find(c.id); it != images_.end()) return it->second;
   const Manifest& m = *c.manifest;
-  ReferenceInput input{m.oracle,        bindings.uniforms, m.constants,   bindings.attributes,
-                       bindings.vertexCount, scene.indices, environmentBindings(m, scene),
-                       scene.width,     scene.height,      {0, 0, 0, 0},  true,
+  ReferenceInput input{m.oracle,
+                       bindings.uniforms,
+                       m.constants,
+                       bindings.attributes,
+                       bindings.vertexCount,
+                       scene.indices,
+                       environmentBindings(m, scene),
+                       scene.width,
+                       scene.height,
+                       {0, 0, 0, 0},
+                       true,
                        decalBindings(m, scene)};
   return images_.emplace(c.id, renderReferenceImage(input)).first->second;
 }
@@ -75,6 +83,12 @@ RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBi
   return job;
 }
 
+std::string blessCommand(const std::string& backend, const std::string& blessFlags,
+                         const std::string& caseId) {
+  return fmt::format("snell bless --backend {}{}{}{}", backend, blessFlags.empty() ? "" : " ",
+                     blessFlags, caseId.empty() ? "" : fmt::format(" --filter '{}'", caseId));
+}
+
 ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                       const ResolvedBindings& bindings, const ReferenceImage& reference,
                       const ImageCheckOptions& options) {
@@ -107,12 +121,13 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
   const std::string goldenKey = options.goldenKey.empty() ? name : options.goldenKey;
   if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey)) {
     check.goldenNote = fmt::format(
-        "no golden yet for this driver (key `{}`): the CPU reference gates it; `snell bless "
-        "--backend {}` writes its goldens",
-        goldenKey, name);
+        "no golden yet for this driver (key `{}`): the CPU reference gates it; `{}` writes its "
+        "goldens",
+        goldenKey, blessCommand(name, options.blessFlags, ""));
   } else if (!options.goldenDir.empty()) {
     try {
-      const Golden golden = readGolden(options.goldenDir, c.id, goldenKey, scene.width, scene.height);
+      const Golden golden = readGolden(options.goldenDir, c.id, goldenKey, scene.width,
+                                       scene.height, blessCommand(name, options.blessFlags, c.id));
       ImageComparison vsGolden =
           compareImages("golden", outcome.image, golden.image, reference.mask, c.spec.image);
       writeDifferenceHeatMap(dir / (name + "-vs-golden.png"), outcome.image, golden.image,

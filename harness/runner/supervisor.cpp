@@ -81,6 +81,7 @@ class Supervision {
       if (options_.validation) argv.push_back("--validation");
       argv.insert(argv.end(), {"--out", options_.outDir, "--golden", options_.goldenDir});
       argv.insert(argv.end(), options_.backendArgs.begin(), options_.backendArgs.end());
+      if (!options_.blessFlags.empty()) argv.insert(argv.end(), {"--bless-flags", options_.blessFlags});
       slot.worker = std::make_unique<WorkerProcess>(argv);
       slot.backend = task.backend;
     }

@@ -57,7 +57,7 @@ int runWorker(const WorkerOptions& options) {
       backend = makeBackend(entry.name, backendOptions(options));
       runner = std::make_unique<CaseRunner>(
           *backend, oracles, scenes, references,
-          ImageCheckOptions{options.outDir, options.goldenDir, entry.goldenKey});
+          ImageCheckOptions{options.outDir, options.goldenDir, entry.goldenKey, options.blessFlags});
     }
     std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
   }

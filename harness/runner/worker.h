@@ -23,6 +23,7 @@ struct WorkerOptions {
   bool describe = false;
   std::string outDir;     // rendered images, heat maps and masks
   std::string goldenDir;  // empty: no golden comparison (bless)
+  std::string blessFlags;  // ImageCheckOptions::blessFlags
 };
 
 // The JSON a describing worker prints, as in a result's "driver".

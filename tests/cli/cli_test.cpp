@@ -45,6 +45,18 @@ std::vector<nlohmann::json> jsonLines(const std::string& text) {
 }
 
 TEST(Cli, UnknownFlagIsExit2) { EXPECT_EQ(snell("run --no-such-flag").code, 2); }
+
+// A user reading --help learns where listings, goldens and images go
+// without reading the source.
+TEST(Cli, HelpShowsTheDefaultFolders) {
+  for (const char* command : {"run", "bless"}) {
+    const Outcome o = snell(fmt::format("{} --help", command));
+    EXPECT_EQ(o.code, 0) << o.out;
+    EXPECT_NE(o.out.find(SNELL_SOURCE_ROOT "/shaders"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find(SNELL_SOURCE_ROOT "/golden"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("(default: snell-out)"), std::string::npos) << o.out;
+  }
+}
 TEST(Cli, NoSubcommandIsExit2) { EXPECT_EQ(snell("").code, 2); }
 TEST(Cli, BadBackendIsExit2) { EXPECT_EQ(snell("run --backend d3d").code, 2); }
 TEST(Cli, MissingShadersFolderIsExit2) { EXPECT_EQ(snell("run --shaders /nonexistent").code, 2); }

@@ -100,6 +100,20 @@ TEST_F(GoldenCli, TruncatedGoldenIsAClearErrorAndIsLeftAsItWas) {
   EXPECT_EQ(std::string((std::istreambuf_iterator<char>(after)), {}), bytes);
 }
 
+// The advice is a command the user can paste: it names their own folders,
+// not the repository's.
+TEST_F(GoldenCli, MissingGoldenAdviceRepeatsTheUsersOwnFolders) {
+  const GoldenFiles files = goldenFiles(dir_ / "golden", kCase, "gl");
+  for (const fs::path& file : {files.image, files.preview, files.metadata}) fs::remove(file);
+  const Outcome o = snell("run");
+  EXPECT_EQ(o.code, 1) << o.output;
+  EXPECT_EQ(o.result["status"], "Fail") << o.output;
+  const std::string advice =
+      fmt::format("snell bless --backend gl --shaders {} --golden {} --filter '{}'",
+                  (dir_ / "shaders").string(), (dir_ / "golden").string(), kCase);
+  EXPECT_NE(o.output.find(advice), std::string::npos) << o.output;
+}
+
 TEST_F(GoldenCli, BlessRestoresAChangedGoldenAndSaysByHowMuch) {
   nudgeOnePixel(0.005f);
   const Outcome o = snell("bless");

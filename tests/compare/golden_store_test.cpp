@@ -27,7 +27,7 @@ class GoldenStore : public ::testing::Test {
 
   std::string errorReading(int width = 16, int height = 8) {
     try {
-      readGolden(root_, "a/b/sphere", "gl", width, height);
+      readGolden(root_, "a/b/sphere", "gl", width, height, "snell bless --golden g --filter 'a/b/sphere'");
     } catch (const UsageError& error) {
       return error.what();
     }
@@ -41,7 +41,7 @@ class GoldenStore : public ::testing::Test {
 
 TEST_F(GoldenStore, RoundTripIsExact) {
   writeGolden(root_, "a/b/sphere", "gl", image_, {{"renderer", "llvmpipe"}});
-  const Golden golden = readGolden(root_, "a/b/sphere", "gl", 16, 8);
+  const Golden golden = readGolden(root_, "a/b/sphere", "gl", 16, 8, "");
   EXPECT_EQ(golden.image.pixels, image_.pixels);
   EXPECT_EQ(golden.metadata["renderer"], "llvmpipe");
   EXPECT_TRUE(fs::exists(goldenFiles(root_, "a/b/sphere", "gl").preview));
@@ -50,7 +50,9 @@ TEST_F(GoldenStore, RoundTripIsExact) {
 TEST_F(GoldenStore, MissingGoldenSaysHowToBless) {
   const std::string message = errorReading();
   EXPECT_NE(message.find("missing"), std::string::npos) << message;
-  EXPECT_NE(message.find("snell bless --backend gl --filter 'a/b/sphere'"), std::string::npos) << message;
+  EXPECT_NE(message.find("bless a new one with `snell bless --golden g --filter 'a/b/sphere'`"),
+            std::string::npos)
+      << message;
 }
 
 TEST_F(GoldenStore, TruncatedGoldenIsAClearErrorAndStaysAsItWas) {
