@@ -11,7 +11,7 @@
 
 #include "core/errors.h"
 #include "core/fragment_probes.h"
-#include "core/legacy_adapter.h"
+#include "backends/vk/legacy_adapter.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The Vulkan legacy adapter as text: each mapping, identifier boundaries,
 // declarations only for what is used, published lines at their numbers,
 // probe lines passed through.
-#include "core/legacy_adapter.h"
+#include "backends/vk/legacy_adapter.h"
 
 #include <gtest/gtest.h>
 

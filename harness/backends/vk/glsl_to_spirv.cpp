@@ -12,7 +12,7 @@
 
 #include "backends/vk/spirv_validate.h"
 #include "core/errors.h"
-#include "core/legacy_adapter.h"
+#include "backends/vk/legacy_adapter.h"
 
 namespace snell::vk {
 

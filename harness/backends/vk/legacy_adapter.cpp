@@ -1,4 +1,4 @@
-#include "core/legacy_adapter.h"
+#include "backends/vk/legacy_adapter.h"
 
 #include <fmt/format.h>
 

@@ -19,7 +19,7 @@
 #include "backends/vk/vk_render.h"
 #include "backends/vk/vk_shader_module.h"
 #include "core/errors.h"
-#include "core/legacy_adapter.h"
+#include "backends/vk/legacy_adapter.h"
 
 namespace snell {
 
