@@ -28,12 +28,16 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 }  // namespace
 
 std::string nearestKey(std::string_view key, std::initializer_list<std::string_view> known) {
+  return nearestKey(key, std::vector<std::string>(known.begin(), known.end()));
+}
+
+std::string nearestKey(std::string_view key, const std::vector<std::string>& known) {
   std::string best;
   std::size_t bestDistance = 0;
-  for (std::string_view candidate : known) {
+  for (const std::string& candidate : known) {
     const std::size_t d = editDistance(key, candidate);
     if (best.empty() || d < bestDistance) {
-      best = std::string(candidate);
+      best = candidate;
       bestDistance = d;
     }
   }

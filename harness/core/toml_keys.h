@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -18,5 +19,6 @@ void rejectUnknownKeys(const toml::table& table, std::initializer_list<std::stri
 
 // The known key nearest to `key` by edit distance, or "" when none is close.
 std::string nearestKey(std::string_view key, std::initializer_list<std::string_view> known);
+std::string nearestKey(std::string_view key, const std::vector<std::string>& known);
 
 }  // namespace snell

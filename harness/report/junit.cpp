@@ -6,14 +6,30 @@
 #include <pugixml.hpp>
 #include <sstream>
 
+#include "runner/checks/check_kind.h"
+
 namespace snell {
+
+namespace {
+
+// The status, then what each check kind found wrong: what a CI page shows
+// without opening the failure's text.
+std::string failureMessage(const CaseResult& r) {
+  std::string message = statusName(r.status);
+  for (const auto& kind : checkKinds())
+    if (const std::string found = kind->junitMessage(r); !found.empty()) message += ": " + found;
+  return message;
+}
+
+}  // namespace
 
 JUnitNotes junitNotesOf(const BaselineReport& report) {
   JUnitNotes notes;
   for (const JudgedCase& c : report.cases) {
     const std::string key = c.result->backend + " " + c.result->caseId;
     if (c.outcome == Outcome::ExpectedFail)
-      notes.expectedFailures[key] = fmt::format("expected failure, {}", c.knownFailure->place.where());
+      notes.expectedFailures[key] =
+          fmt::format("expected failure, {}", c.knownFailure->place.where());
     else if (c.outcome == Outcome::KnownFlake)
       notes.flakes[key] = fmt::format("known flake, {}", c.flakePattern->place.where());
     else if (c.outcome == Outcome::Flake)
@@ -26,7 +42,8 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
   pugi::xml_document doc;
   pugi::xml_node suites = doc.append_child("testsuites");
   suites.append_attribute("name") =
-      notes.incomplete.empty() ? "snell" : fmt::format("snell (incomplete: {})", notes.incomplete).c_str();
+      notes.incomplete.empty() ? "snell"
+                               : fmt::format("snell (incomplete: {})", notes.incomplete).c_str();
   std::map<std::string, pugi::xml_node> byBackend;
   for (const CaseResult& r : results) {
     pugi::xml_node& suite = byBackend[r.backend];
@@ -39,7 +56,8 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
     test.append_attribute("name") = r.caseId.c_str();
     test.append_attribute("time") = r.seconds;
     const std::string key = r.backend + " " + r.caseId;
-    if (const auto expected = notes.expectedFailures.find(key); expected != notes.expectedFailures.end()) {
+    if (const auto expected = notes.expectedFailures.find(key);
+        expected != notes.expectedFailures.end()) {
       test.append_child("skipped").append_attribute("message") =
           fmt::format("{}: {}", statusName(r.status), expected->second).c_str();
     } else if (const auto flake = notes.flakes.find(key); flake != notes.flakes.end()) {
@@ -49,22 +67,24 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
       flaky.append_attribute("message") = flake->second.c_str();
       flaky.append_child(pugi::node_pcdata).set_value(r.message.c_str());
     } else if (isFailure(r.status)) {
-      pugi::xml_node failure =
-          test.append_child(r.status == Status::Fail ? "failure" : "error");
+      pugi::xml_node failure = test.append_child(r.status == Status::Fail ? "failure" : "error");
       failure.append_attribute("type") = statusName(r.status);
-      failure.append_attribute("message") = statusName(r.status);
+      failure.append_attribute("message") = failureMessage(r).c_str();
       failure.append_child(pugi::node_pcdata).set_value(r.message.c_str());
     } else if (r.status == Status::NotSupported) {
       test.append_child("skipped").append_attribute("message") = r.message.c_str();
     }
-    test.append_child("system-out").append_child(pugi::node_pcdata).set_value(
-        (fmt::format("status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
-                     statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
-                     r.worstSlack(), r.driver.apiVersion, r.driver.renderer) +
-         // A listing kept as published that must not compile: its diagnostic
-         // is the result.
-         (r.status == Status::ExpectedCompileError ? "\n" + r.message : std::string()))
-            .c_str());
+    test.append_child("system-out")
+        .append_child(pugi::node_pcdata)
+        .set_value(
+            (fmt::format(
+                 "status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
+                 statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
+                 r.worstSlack(), r.driver.apiVersion, r.driver.renderer) +
+             // A listing kept as published that must not compile: its diagnostic
+             // is the result.
+             (r.status == Status::ExpectedCompileError ? "\n" + r.message : std::string()))
+                .c_str());
   }
   for (auto& [backend, suite] : byBackend) {
     int tests = 0, failures = 0, errors = 0, skipped = 0;

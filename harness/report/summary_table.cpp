@@ -4,47 +4,33 @@
 #include <fmt/ostream.h>
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 
+#include "runner/checks/check_kind.h"
+
 namespace snell {
-namespace {
-
-// "-" where nothing was held against an interval: 0.000 would read as a perfect match.
-std::string slackText(const CaseResult& r) {
-  if (r.componentsChecked() == 0) return "-";
-  const double s = r.worstSlack();
-  return std::isfinite(s) ? fmt::format("{:.3f}", s) : "inf";
-}
-
-// The count and, where anything was read back, the fraction of components
-// the spec leaves undefined (a manifest's max_undefined bounds it).
-std::string undefinedText(const CaseResult& r) {
-  const std::size_t undefined = r.componentsUndefined();
-  const std::size_t all = undefined + r.componentsChecked();
-  if (all == 0) return "-";
-  return fmt::format("{} ({:.1f}%)", undefined, 100.0 * static_cast<double>(undefined) / all);
-}
-
-// The largest error against the CPU reference, or "-" for a case that draws nothing.
-std::string imageText(const CaseResult& r) {
-  for (const ImageComparison& c : r.images)
-    if (c.against == "reference") return fmt::format("{:.2e}", c.maxError);
-  return "-";
-}
-
-}  // namespace
 
 void printSummaryTable(std::ostream& out, const std::vector<CaseResult>& results) {
-  std::size_t idWidth = 4;
-  for (const CaseResult& r : results) idWidth = std::max(idWidth, r.caseId.size());
-  fmt::print(out, "{:<{}}  {:<7}  {:<20}  {:>8}  {:>15}  {:>11}  {:>10}  {:>8}\n", "case", idWidth,
-             "backend", "status", "vectors", "undefined", "worst slack", "image err", "time");
+  std::size_t idWidth = 4, backendWidth = 7;
+  for (const CaseResult& r : results) {
+    idWidth = std::max(idWidth, r.caseId.size());
+    backendWidth = std::max(backendWidth, r.backend.size());
+  }
+  // Each check kind brings its own columns (runner/checks/).
+  std::vector<SummaryColumn> columns;
+  for (const auto& kind : checkKinds())
+    for (SummaryColumn& column : kind->summaryColumns()) columns.push_back(std::move(column));
+  fmt::print(out, "{:<{}}  {:<{}}  {:<20}", "case", idWidth, "backend", backendWidth, "status");
+  for (const SummaryColumn& column : columns)
+    fmt::print(out, "  {:>{}}", column.header, column.width);
+  fmt::print(out, "  {:>8}\n", "time");
   bool atTheEdge = false;
   for (const CaseResult& r : results) {
-    fmt::print(out, "{:<{}}  {:<7}  {:<20}  {:>8}  {:>15}  {:>11}  {:>10}  {:>7.3f}s\n", r.caseId,
-               idWidth, r.backend, statusName(r.status), r.vectorsChecked(), undefinedText(r),
-               slackText(r), imageText(r), r.seconds);
+    fmt::print(out, "{:<{}}  {:<{}}  {:<20}", r.caseId, idWidth, r.backend, backendWidth,
+               statusName(r.status));
+    for (const SummaryColumn& column : columns)
+      fmt::print(out, "  {:>{}}", column.cell(r), column.width);
+    fmt::print(out, "  {:>7.3f}s\n", r.seconds);
     atTheEdge = atTheEdge || (r.componentsChecked() > 0 && r.worstSlack() == 1.0);
   }
   if (atTheEdge)
@@ -54,7 +40,8 @@ void printSummaryTable(std::ostream& out, const std::vector<CaseResult>& results
   std::map<std::string, int> counts;
   for (const CaseResult& r : results) ++counts[statusName(r.status)];
   std::string tally;
-  for (const auto& [name, n] : counts) tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, name);
+  for (const auto& [name, n] : counts)
+    tally += fmt::format("{}{} {}", tally.empty() ? "" : ", ", n, name);
   fmt::print(out, "{} results: {}\n", results.size(), tally.empty() ? "none" : tally);
 }
 

@@ -10,8 +10,9 @@
 #include "core/errors.h"
 #include "core/scene_file.h"
 #include "runner/builtin_eval.h"
+#include "runner/checks/check_kind.h"
 #include "runner/failure_report.h"
-#include "runner/fragment_vector_check.h"
+#include "runner/run_helpers.h"
 
 namespace snell {
 namespace {
@@ -19,11 +20,6 @@ namespace {
 // The key manifests use for an API: "gl" or "vk".
 std::string apiKey(const DriverInfo& driver) {
   return precisionRulesForApi(driver.api) == PrecisionRules::Vulkan ? "vk" : "gl";
-}
-
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -46,9 +42,10 @@ const std::vector<OracleVarying>& OracleCache::get(const Case& c, const Resolved
   const std::vector<std::string> outputs = oracle->outputs();
   for (const std::string& name : m.captureVertex)
     if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
-      throw std::logic_error(fmt::format("{}: `{}` is not computed by oracle `{}`: "
-                                         "validateCase lets no such manifest through",
-                                         m.path.string(), name, m.oracle));
+      throw std::logic_error(
+          fmt::format("{}: `{}` is not computed by oracle `{}`: "
+                      "validateCase lets no such manifest through",
+                      m.path.string(), name, m.oracle));
   std::vector<OracleVarying> all = oracle->evaluate(
       {bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount, rules});
   std::vector<OracleVarying> captured;
@@ -89,12 +86,11 @@ CaseResult CaseRunner::run(const Case& c) {
     if (m.expect == Expectation::CompileError) {
       runExpectedCompileError(c, result);
     } else {
-      if (c.spec.has("vectors") && !m.captureVertex.empty()) runVectors(c, bindings, result);
-      if (c.spec.has("vectors") && !m.captureFragment.empty() &&
-          result.status != Status::CompileError)
-        runFragmentVectors(c, bindings, result);
-      if (c.spec.has("image") && result.status != Status::CompileError)
-        runImage(c, bindings, result);
+      CheckEnvironment environment{backend_, driver_,     oracles_,
+                                   scenes_,  references_, imageOptions_};
+      for (const auto& kind : checkKinds())
+        if (c.spec.has(kind->name()) && result.status != Status::CompileError)
+          kind->run(c, bindings, environment, result);
     }
   } catch (const SetupError& error) {
     result.status = Status::Fail;
@@ -107,27 +103,6 @@ CaseResult CaseRunner::run(const Case& c) {
     }
   result.seconds = secondsSince(start);
   return result;
-}
-
-void CaseRunner::runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {
-  const Manifest& m = *c.manifest;
-  const std::vector<OracleVarying>& expected =
-      oracles_.get(c, bindings, precisionRulesForApi(driver_.api), &result.oracleSeconds);
-  CaptureJob job{loadProgram(m), bindings.uniforms, bindings.attributes, m.captureVertex,
-                 bindings.vertexCount};
-  const auto backendStart = std::chrono::steady_clock::now();
-  const CaptureOutcome outcome = backend_.captureVertexOutputs(job);
-  result.backendSeconds += secondsSince(backendStart);
-  result.compileLog = outcome.compile.log;
-  if (!outcome.compile.ok) {
-    result.status = Status::CompileError;
-    result.message = outcome.compile.log;
-    return;
-  }
-  for (std::size_t k = 0; k < expected.size(); ++k)
-    result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
-  if (result.componentsFailed()) result.status = worstOf(result.status, Status::Fail);
-  result.message += describeVertexFailures(m, job.program, bindings, result.varyings);
 }
 
 // A listing kept as published although it does not compile: it passes as
@@ -143,9 +118,10 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
   result.compileLog = outcome.log;
   if (outcome.ok) {
     result.status = Status::Fail;
-    result.message = "compiled, but the listing as published is expected not to compile "
-                     "(`expect = \"compile-error\"`)" +
-                     (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
+    result.message =
+        "compiled, but the listing as published is expected not to compile "
+        "(`expect = \"compile-error\"`)" +
+        (outcome.log.empty() ? std::string() : ":\n" + outcome.log);
     return;
   }
   const auto pinned = m.expectedErrors.find(apiKey(driver_));
@@ -162,9 +138,8 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
   };
   // The first error is the one pinned: errors after it may be consequences of
   // it, and an error before it means the text changed.
-  const auto found =
-      std::find_if(outcome.diagnostics.begin(), outcome.diagnostics.end(),
-                   [](const CompileDiagnostic& d) { return d.error; });
+  const auto found = std::find_if(outcome.diagnostics.begin(), outcome.diagnostics.end(),
+                                  [](const CompileDiagnostic& d) { return d.error; });
   if (found == outcome.diagnostics.end() || !matches(*found)) {
     result.status = Status::Fail;
     result.message = fmt::format(
@@ -178,65 +153,6 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
   result.status = Status::ExpectedCompileError;
   result.message = fmt::format("does not compile, as expected: {}:{}: {}\n{}", file, found->line,
                                found->message, outcome.log);
-}
-
-void CaseRunner::runFragmentVectors(const Case& c, const ResolvedBindings& bindings,
-                                    CaseResult& result) {
-  const Scene& scene = scenes_.get(c.spec.scene);
-  const auto backendStart = std::chrono::steady_clock::now();
-  FragmentVectorCheck check = checkFragmentVectors(backend_, *c.manifest, scene, bindings);
-  result.backendSeconds += secondsSince(backendStart) - check.oracleSeconds;
-  result.oracleSeconds += check.oracleSeconds;
-  if (!check.compiled) {
-    result.status = Status::CompileError;
-    result.compileLog = check.compileLog;
-    result.message = check.compileLog;
-    return;
-  }
-  result.vertices = check.pixels;
-  for (VaryingCheck& varying : check.varyings) result.varyings.push_back(std::move(varying));
-  if (result.componentsFailed() || !check.unwritten.empty())
-    result.status = worstOf(result.status, Status::Fail);
-  if (check.pixels == 0) {
-    result.status = worstOf(result.status, Status::Fail);
-    result.message += "no pixel wrote every value the oracle reads: nothing was checked\n";
-  }
-  result.message += check.unwritten + check.failures;
-}
-
-void CaseRunner::runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result) {
-  const Scene& scene = scenes_.get(c.spec.scene);
-  const ReferenceImage& reference = references_.get(c, scene, bindings);
-  const auto backendStart = std::chrono::steady_clock::now();
-  const ImageCheck check = checkImage(backend_, c, scene, bindings, reference, imageOptions_);
-  result.backendSeconds += secondsSince(backendStart);
-  if (!check.compiled) {
-    result.status = Status::CompileError;
-    result.compileLog = check.compileLog;
-    result.message = check.compileLog;
-    return;
-  }
-  for (const ImageComparison& comparison : check.comparisons) {
-    result.images.push_back(comparison);
-    if (comparison.verdict == ImageVerdict::Pass) continue;
-    // Off the reference is wrong; off the golden is a change: a failure
-    // beyond `fail`, a quality warning between `warn` and `fail`.
-    const bool golden = comparison.against == "golden";
-    result.status = worstOf(result.status, comparison.verdict == ImageVerdict::Fail ? Status::Fail
-                                           : golden ? Status::QualityWarning
-                                                    : Status::Pass);
-    result.message +=
-        fmt::format("image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
-                    comparison.against, imageVerdictName(comparison.verdict),
-                    comparison.problem.empty() ? "" : " (" + comparison.problem + ")",
-                    comparison.maxError, comparison.maxX, comparison.maxY, comparison.failed,
-                    comparison.compared, c.spec.image.fail);
-  }
-  if (!check.goldenNote.empty()) result.message += check.goldenNote + "\n";
-  if (!check.goldenProblem.empty()) {
-    result.status = worstOf(result.status, Status::Fail);
-    result.message += check.goldenProblem + "\n";
-  }
 }
 
 }  // namespace snell

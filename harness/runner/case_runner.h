@@ -56,10 +56,7 @@ class CaseRunner {
   CaseResult run(const Case& c);
 
  private:
-  void runVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
-  void runFragmentVectors(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
   void runExpectedCompileError(const Case& c, CaseResult& result);
-  void runImage(const Case& c, const ResolvedBindings& bindings, CaseResult& result);
 
   Backend& backend_;
   OracleCache& oracles_;
