@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "json_lines.h"
 #include "oracle/physics/fresnel.h"
 #include "oracle/physics/interface_angles.h"
 #include "oracle/physics/sellmeier.h"
@@ -31,14 +31,6 @@ Outcome evalLines(const std::string& backend, const std::string& input) {
   return o;
 }
 
-std::vector<nlohmann::json> answers(const std::string& text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] == '{') lines.push_back(nlohmann::json::parse(line));
-  return lines;
-}
-
 TEST(EvalPhysics, AnswersAreThePhysicsReference) {
   const Outcome o = evalLines("oracle",
                               R"({"fn":"fresnel","model":"exact","cos_i":1,"n1":1,"n2":1.5}
@@ -51,7 +43,7 @@ TEST(EvalPhysics, AnswersAreThePhysicsReference) {
 {"fn":"brewster_angle","n1":1,"n2":1.5}
 )");
   ASSERT_EQ(o.code, 0) << o.out;
-  const auto lines = answers(o.out);
+  const auto lines = jsonLines(o.out);
   ASSERT_EQ(lines.size(), 8u) << o.out;
   const auto value = [&](std::size_t k) { return lines[k]["value"].get<double>(); };
   EXPECT_EQ(value(0), physics::fresnelExact(1.0, 1.0, 1.5).unpolarised);
@@ -80,7 +72,7 @@ TEST(EvalPhysics, BadLinesNameTheirNumberAndTheRestAreAnswered) {
 {"fn":"ior","glass":"N-BK7","lambda_nm":500}
 )");
   EXPECT_EQ(o.code, 2) << o.out;
-  const auto lines = answers(o.out);
+  const auto lines = jsonLines(o.out);
   ASSERT_EQ(lines.size(), 9u) << o.out;
   EXPECT_TRUE(lines[0].contains("value"));
   EXPECT_TRUE(lines[8].contains("value"));
@@ -99,7 +91,7 @@ TEST(EvalPhysics, ADriverRefersPhysicsLinesToTheReference) {
   const Outcome o = evalLines("gl", R"({"fn":"critical_angle","n1":1.5,"n2":1})"
                                     "\n");
   EXPECT_EQ(o.code, 2) << o.out;
-  const auto lines = answers(o.out);
+  const auto lines = jsonLines(o.out);
   ASSERT_EQ(lines.size(), 1u) << o.out;
   EXPECT_NE(lines[0]["error"].get<std::string>().find("physics reference"), std::string::npos)
       << o.out;
