@@ -149,7 +149,7 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
     try {
       const json object = json::parse(text);
       if (!isPhysicsCall(object)) {
-        line.call = parseEvalLine(object);
+        line.call = parseEvalObject(object);
       } else if (backend) {
         throw UsageError(fmt::format(
             "{} is answered by the physics reference, not by a driver: run it with --backend "

@@ -38,10 +38,10 @@ std::vector<float> floatVector(const json& object, const char* key) {
 }  // namespace
 
 BuiltinCall parseEvalLine(const std::string& text) {
-  return parseEvalLine(json::parse(text));  // throws json::parse_error
+  return parseEvalObject(json::parse(text));  // throws json::parse_error
 }
 
-BuiltinCall parseEvalLine(const json& object) {
+BuiltinCall parseEvalObject(const json& object) {
   constexpr const char* kFunctions =
       "use \"reflect\" or \"refract\" (a driver or the oracle), or \"fresnel\", \"ior\", "
       "\"critical_angle\" or \"brewster_angle\" (the physics reference)";

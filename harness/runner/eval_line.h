@@ -10,6 +10,6 @@ namespace snell {
 // Throws nlohmann::json::exception for text that is not JSON, UsageError
 // for JSON that is not a call (unknown fn, wrong lengths, missing eta).
 BuiltinCall parseEvalLine(const std::string& text);
-BuiltinCall parseEvalLine(const nlohmann::json& object);
+BuiltinCall parseEvalObject(const nlohmann::json& object);
 
 }  // namespace snell
