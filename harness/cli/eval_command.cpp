@@ -13,7 +13,10 @@ namespace snell::cli {
 
 Command addEvalCommand(CLI::App& app) {
   CLI::App* eval = app.add_subcommand(
-      "eval", "Evaluate reflect/refract calls given as JSON Lines, on the oracle or a driver");
+      "eval",
+      "Evaluate reflect/refract calls given as JSON Lines, on the oracle or a driver, and "
+      "physics functions (Fresnel, dispersion, critical and Brewster angles) on the physics "
+      "reference");
   struct Options {
     std::string backend = "oracle";
     std::string rules = "glsl";
@@ -41,7 +44,11 @@ vectors of 1 to 4 components; "nan", "inf" and "-inf" are accepted as numbers. E
 value, lo and hi (the fp32 interval the spec allows), the rules followed, "undefined" per
 component where the spec leaves it open, and "alternatives" (value, lo, hi for each way) where
 a branch may go either way: a vector is within the spec when it fits one alternative whole.
-On gl and vk also exact, within_spec and slack.)");
+On gl and vk also exact, within_spec and slack.
+Physics lines, answered in double by the physics reference (--backend oracle only):
+{"fn":"fresnel","model":"exact"|"schlick"|"schlick_dense_side","cos_i":0.8,"n1":1,"n2":1.5},
+{"fn":"ior","glass":"N-BK7"|"water","lambda_nm":589.3}, {"fn":"critical_angle","n1":1.5,"n2":1}
+and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "value".)");
   return [options] {
     std::ifstream file;
     std::istream* in = &std::cin;

@@ -14,6 +14,7 @@
 #include "core/errors.h"
 #include "oracle/builtin_probe.h"
 #include "runner/eval_line.h"
+#include "runner/physics_eval_line.h"
 #include "runner/probe_shader.h"
 
 namespace snell {
@@ -25,7 +26,8 @@ constexpr std::size_t kBatchLines = 8192;
 
 struct Line {
   std::size_t number = 0;
-  std::optional<BuiltinCall> call;  // empty when malformed
+  std::optional<BuiltinCall> call;  // empty when malformed or a physics line
+  std::optional<json> physics;      // a physics line's answer
   std::string error;
   std::optional<BuiltinResult> oracle;
   std::vector<float> driver;
@@ -75,6 +77,12 @@ void runOnDriver(std::vector<Line>& lines, Backend& backend) {
 }
 
 json answer(const Line& line, bool onDriver, PrecisionRules rules, EvalSummary& summary) {
+  if (line.physics) {
+    ++summary.answered;
+    json out = {{"line", line.number}};
+    out.update(*line.physics);
+    return out;
+  }
   if (!line.call) {
     ++summary.malformed;
     return {{"line", line.number}, {"error", line.error}};
@@ -139,7 +147,17 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
     Line line;
     line.number = number;
     try {
-      line.call = parseEvalLine(text);
+      const json object = json::parse(text);
+      if (!isPhysicsCall(object)) {
+        line.call = parseEvalObject(object);
+      } else if (backend) {
+        throw UsageError(fmt::format(
+            "{} is answered by the physics reference, not by a driver: run it with --backend "
+            "oracle",
+            object.at("fn").get<std::string>()));
+      } else {
+        line.physics = evaluatePhysicsCall(object);
+      }
     } catch (const json::exception& error) {
       line.error = fmt::format("line {}: not valid JSON ({})", number, error.what());
     } catch (const UsageError& error) {

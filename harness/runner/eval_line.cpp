@@ -38,14 +38,20 @@ std::vector<float> floatVector(const json& object, const char* key) {
 }  // namespace
 
 BuiltinCall parseEvalLine(const std::string& text) {
-  const json object = json::parse(text);  // throws json::parse_error
+  return parseEvalObject(json::parse(text));  // throws json::parse_error
+}
+
+BuiltinCall parseEvalObject(const json& object) {
+  constexpr const char* kFunctions =
+      "use \"reflect\" or \"refract\" (a driver or the oracle), or \"fresnel\", \"ior\", "
+      "\"critical_angle\" or \"brewster_angle\" (the physics reference)";
   if (!object.is_object()) throw UsageError("expected a JSON object");
   if (!object.contains("fn") || !object.at("fn").is_string())
-    throw UsageError("missing \"fn\": use \"reflect\" or \"refract\"");
+    throw UsageError(fmt::format("missing \"fn\": {}", kFunctions));
   BuiltinCall call;
   call.fn = object.at("fn").get<std::string>();
   if (call.fn != "reflect" && call.fn != "refract")
-    throw UsageError(fmt::format("unknown fn \"{}\": use \"reflect\" or \"refract\"", call.fn));
+    throw UsageError(fmt::format("unknown fn \"{}\": {}", call.fn, kFunctions));
   call.I = floatVector(object, "I");
   call.N = floatVector(object, "N");
   if (call.I.size() != call.N.size())

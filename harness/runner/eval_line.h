@@ -1,5 +1,6 @@
 #pragma once
 // One line of `snell eval` input: {"fn":"refract","I":[...],"N":[...],"eta":0.66}.
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "oracle/builtin_probe.h"
@@ -9,5 +10,6 @@ namespace snell {
 // Throws nlohmann::json::exception for text that is not JSON, UsageError
 // for JSON that is not a call (unknown fn, wrong lengths, missing eta).
 BuiltinCall parseEvalLine(const std::string& text);
+BuiltinCall parseEvalObject(const nlohmann::json& object);
 
 }  // namespace snell

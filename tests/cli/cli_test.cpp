@@ -12,7 +12,11 @@
 #include <sstream>
 #include <string>
 
+#include "json_lines.h"
+
 namespace {
+
+using snell::testing::jsonLines;
 
 namespace fs = std::filesystem;
 
@@ -34,14 +38,6 @@ Outcome snell(const std::string& args, const std::string& input = "") {
   outcome.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   fs::remove(in);
   return outcome;
-}
-
-std::vector<nlohmann::json> jsonLines(const std::string& text) {
-  std::vector<nlohmann::json> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] == '{') lines.push_back(nlohmann::json::parse(line));
-  return lines;
 }
 
 TEST(Cli, UnknownFlagIsExit2) { EXPECT_EQ(snell("run --no-such-flag").code, 2); }
