@@ -1,8 +1,10 @@
 #include "cli/suite_session.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -166,6 +168,10 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   supervisor.validation = options.validation;
   supervisor.backendArgs = workerBackendArgs(options);
   supervisor.blessFlags = userFolderFlags(options);
+  // Unique to this run: its workers share the CPU reference images they
+  // render, and never take one left in --out by an earlier run.
+  supervisor.runId =
+      fmt::format("{}-{}", ::getpid(), std::chrono::system_clock::now().time_since_epoch().count());
   supervisor.outDir = fs::absolute(options.out).string();
   supervisor.goldenDir = compareGoldens ? fs::absolute(options.golden).string() : "";
   supervisor.jobs = options.jobs > 0

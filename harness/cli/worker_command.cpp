@@ -17,6 +17,8 @@ Command addWorkerCommand(CLI::App& app) {
                 "Bring the backend up, print its driver as JSON and exit");
   sub->add_option("--out", options->outDir, "Folder for images, heat maps and masks")->required();
   sub->add_option("--golden", options->goldenDir, "Folder of goldens; empty for none")->required();
+  sub->add_option("--run-id", options->runId,
+                  "Share each case's CPU reference image with the run's other workers");
   sub->add_option("--bless-flags", options->blessFlags,
                   "The user's --shaders/--golden flags, for the advice to bless a golden");
   return [options] { return runWorker(*options); };

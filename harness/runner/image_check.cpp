@@ -28,25 +28,6 @@ std::map<std::string, const Image*> decalBindings(const Manifest& m, const Scene
   return out;
 }
 
-const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
-                                          const ResolvedBindings& bindings) {
-  if (auto it = images_.find(c.id); it != images_.end()) return it->second;
-  const Manifest& m = *c.manifest;
-  ReferenceInput input{m.oracle,
-                       bindings.uniforms,
-                       m.constants,
-                       bindings.attributes,
-                       bindings.vertexCount,
-                       scene.indices,
-                       environmentBindings(m, scene),
-                       scene.width,
-                       scene.height,
-                       {0, 0, 0, 0},
-                       true,
-                       decalBindings(m, scene)};
-  return images_.emplace(c.id, renderReferenceImage(input)).first->second;
-}
-
 fs::path renderedImagePath(const fs::path& outDir, const std::string& caseId,
                            const std::string& backend) {
   return outDir / caseId / (backend + ".exr");

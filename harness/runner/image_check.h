@@ -12,6 +12,7 @@
 #include "compare/image_compare.h"
 #include "core/case.h"
 #include "oracle/reference/reference_image.h"
+#include "runner/reference_cache.h"
 
 namespace snell {
 
@@ -27,14 +28,6 @@ struct ImageCheckOptions {
 // `snell bless` for one case on one backend, with the user's flags.
 std::string blessCommand(const std::string& backend, const std::string& blessFlags,
                          const std::string& caseId);
-
-class ReferenceCache {
- public:
-  const ReferenceImage& get(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
-
- private:
-  std::map<std::string, ReferenceImage> images_;
-};
 
 struct ImageCheck {
   bool compiled = true;

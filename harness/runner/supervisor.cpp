@@ -21,8 +21,8 @@ using Clock = std::chrono::steady_clock;
 
 struct Slot {
   std::unique_ptr<WorkerProcess> worker;
-  std::string backend;                  // the backend its worker has loaded
-  std::optional<std::size_t> task;      // the case it is running
+  std::string backend;              // the backend its worker has loaded
+  std::optional<std::size_t> task;  // the case it is running
   Clock::time_point started, deadline;
 };
 
@@ -40,7 +40,10 @@ class Supervision {
  public:
   Supervision(const std::vector<Task>& tasks, const SupervisorOptions& options,
               const ResultCallback& onResult)
-      : tasks_(tasks), options_(options), onResult_(onResult), results_(tasks.size()),
+      : tasks_(tasks),
+        options_(options),
+        onResult_(onResult),
+        results_(tasks.size()),
         finished_(tasks.size(), false),
         slots_(static_cast<std::size_t>(std::max(1, options.jobs))) {
     for (std::size_t k = 0; k < tasks.size(); ++k) pending_.push_back(k);
@@ -76,12 +79,14 @@ class Supervision {
     const Task& task = tasks_[index];
     if (slot.worker && slot.backend != task.backend) slot.worker.reset();
     if (!slot.worker) {
-      std::vector<std::string> argv = {options_.executable, "worker", "--backend", task.backend,
-                                       "--shaders", options_.shaders};
+      std::vector<std::string> argv = {options_.executable, "worker",    "--backend",
+                                       task.backend,        "--shaders", options_.shaders};
       if (options_.validation) argv.push_back("--validation");
       argv.insert(argv.end(), {"--out", options_.outDir, "--golden", options_.goldenDir});
       argv.insert(argv.end(), options_.backendArgs.begin(), options_.backendArgs.end());
-      if (!options_.blessFlags.empty()) argv.insert(argv.end(), {"--bless-flags", options_.blessFlags});
+      if (!options_.blessFlags.empty())
+        argv.insert(argv.end(), {"--bless-flags", options_.blessFlags});
+      if (!options_.runId.empty()) argv.insert(argv.end(), {"--run-id", options_.runId});
       slot.worker = std::make_unique<WorkerProcess>(argv);
       slot.backend = task.backend;
     }
@@ -110,10 +115,10 @@ class Supervision {
     const std::string tail = slot.worker->stderrTail(10);
     slot.worker.reset();
     if (!slot.task) return;
-    finishTask(slot, lostCase(tasks_[*slot.task], Status::Crash,
-                              fmt::format("worker {}{}{}", how, tail.empty() ? "" : "; stderr:\n",
-                                          tail),
-                              elapsed(slot)));
+    finishTask(slot,
+               lostCase(tasks_[*slot.task], Status::Crash,
+                        fmt::format("worker {}{}{}", how, tail.empty() ? "" : "; stderr:\n", tail),
+                        elapsed(slot)));
   }
 
   void timedOut(Slot& slot, double seconds) {
@@ -164,15 +169,18 @@ class Supervision {
     int timeoutMs = -1;
     if (nearest != Clock::time_point::max())
       timeoutMs = static_cast<int>(std::max<long>(
-          0, std::chrono::duration_cast<std::chrono::milliseconds>(nearest - Clock::now()).count() + 1));
+          0, std::chrono::duration_cast<std::chrono::milliseconds>(nearest - Clock::now()).count() +
+                 1));
     if (!fds.empty()) poll(fds.data(), fds.size(), timeoutMs);
     // A signal interrupts poll(); a worker it also killed is not a Crash.
     if (stopped()) return;
     for (std::size_t k = 0; k < fds.size(); ++k) {
       Slot& slot = *owners[k];
       if (!slot.worker || !(fds[k].revents & (POLLIN | POLLHUP | POLLERR))) continue;
-      if (fds[k].fd == slot.worker->stderrFd()) slot.worker->drainStderr();
-      else readResults(slot);
+      if (fds[k].fd == slot.worker->stderrFd())
+        slot.worker->drainStderr();
+      else
+        readResults(slot);
     }
     // Every expired worker is signalled before any is reaped: reaping one
     // that is tearing down JIT threads takes a while, and must not make the

@@ -47,7 +47,8 @@ int runWorker(const WorkerOptions& options) {
   std::unique_ptr<Backend> backend;  // loaded on the first case, not before
   OracleCache oracles;
   SceneCache scenes(sceneSearchPath(options.shaders));
-  ReferenceCache references;
+  ReferenceCache references =
+      options.runId.empty() ? ReferenceCache() : ReferenceCache(options.outDir, options.runId);
   std::unique_ptr<CaseRunner> runner;
   for (std::string id; std::getline(std::cin, id);) {
     auto it = byId.find(id);
@@ -55,9 +56,9 @@ int runWorker(const WorkerOptions& options) {
     validateCase(*it->second, scenes);  // the same step the supervisor ran
     if (!backend) {
       backend = makeBackend(entry.name, backendOptions(options));
-      runner = std::make_unique<CaseRunner>(
-          *backend, oracles, scenes, references,
-          ImageCheckOptions{options.outDir, options.goldenDir, entry.goldenKey, options.blessFlags});
+      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
+                                            ImageCheckOptions{options.outDir, options.goldenDir,
+                                                              entry.goldenKey, options.blessFlags});
     }
     std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
   }

@@ -24,6 +24,9 @@ struct WorkerOptions {
   std::string outDir;     // rendered images, heat maps and masks
   std::string goldenDir;  // empty: no golden comparison (bless)
   std::string blessFlags;  // ImageCheckOptions::blessFlags
+  // The run this worker belongs to: its workers share each case's CPU
+  // reference image through outDir (runner/reference_cache.h). Empty: not shared.
+  std::string runId;
 };
 
 // The JSON a describing worker prints, as in a result's "driver".

@@ -1,0 +1,93 @@
+#include "runner/reference_cache.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <iterator>
+
+#include "compare/image_io.h"
+#include "core/atomic_file.h"
+#include "core/errors.h"
+#include "runner/image_check.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An exclusive lock on a file, held for the object's life.
+class FileLock {
+ public:
+  explicit FileLock(const fs::path& path)
+      : fd_(::open(path.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644)) {
+    if (fd_ < 0) throw SetupError("cannot open the lock file " + path.string());
+    while (::flock(fd_, LOCK_EX) != 0)
+      if (errno != EINTR) throw SetupError("cannot lock " + path.string());
+  }
+  ~FileLock() { ::close(fd_); }  // closing releases the lock
+  FileLock(const FileLock&) = delete;
+  FileLock& operator=(const FileLock&) = delete;
+
+ private:
+  int fd_;
+};
+
+std::string contentsOf(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+}  // namespace
+
+const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
+                                          const ResolvedBindings& bindings) {
+  if (auto it = images_.find(c.id); it != images_.end()) return it->second;
+  ReferenceImage image =
+      runId_.empty() ? render(c, scene, bindings) : renderOrShare(c, scene, bindings);
+  return images_.emplace(c.id, std::move(image)).first->second;
+}
+
+ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
+                                      const ResolvedBindings& bindings) {
+  const Manifest& m = *c.manifest;
+  ReferenceInput input{m.oracle,
+                       bindings.uniforms,
+                       m.constants,
+                       bindings.attributes,
+                       bindings.vertexCount,
+                       scene.indices,
+                       environmentBindings(m, scene),
+                       scene.width,
+                       scene.height,
+                       {0, 0, 0, 0},
+                       true,
+                       decalBindings(m, scene)};
+  ++rendered_;
+  return renderReferenceImage(input);
+}
+
+ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
+                                             const ResolvedBindings& bindings) {
+  const fs::path dir = outDir_ / c.id;
+  fs::create_directories(dir);
+  const fs::path color = dir / "reference.exr", mask = maskImagePath(outDir_, c.id),
+                 owner = dir / "reference.run";
+  const FileLock lock(dir / "reference.lock");
+  if (contentsOf(owner) == runId_) {
+    try {
+      ReferenceImage shared{readImage(color), maskFromImage(readImage(mask))};
+      if (shared.color.width == scene.width && shared.color.height == scene.height) return shared;
+    } catch (const UsageError&) {
+      // Damaged since it was written: render it again below.
+    }
+  }
+  ReferenceImage image = render(c, scene, bindings);
+  writeImageAtomically(color, image.color);
+  writeImageAtomically(mask, maskAsImage(image));
+  writeFileAtomically(owner, runId_);
+  return image;
+}
+
+}  // namespace snell

@@ -1,0 +1,42 @@
+#pragma once
+// The CPU reference image of each image case, computed once per run. In a
+// worker it is kept in memory for the cases that worker runs; across the
+// run's workers (one per backend) it is shared through the run's output
+// folder, where the reference and its mask are written for the report
+// anyway: under a lock, the first worker renders and writes them with the
+// run's id, and every other worker of that run reads them back (float EXR,
+// so bit for bit) instead of rendering again.
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "core/case.h"
+#include "core/scene.h"
+#include "oracle/reference/reference_image.h"
+
+namespace snell {
+
+class ReferenceCache {
+ public:
+  ReferenceCache() = default;  // in memory only
+  // Shared with the other workers of the run `runId` through `outDir`.
+  ReferenceCache(std::filesystem::path outDir, std::string runId)
+      : outDir_(std::move(outDir)), runId_(std::move(runId)) {}
+
+  const ReferenceImage& get(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
+
+  // How many references this cache rendered itself (the rest it read).
+  std::size_t rendered() const { return rendered_; }
+
+ private:
+  ReferenceImage render(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
+  ReferenceImage renderOrShare(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
+
+  std::filesystem::path outDir_;
+  std::string runId_;
+  std::map<std::string, ReferenceImage> images_;
+  std::size_t rendered_ = 0;
+};
+
+}  // namespace snell
