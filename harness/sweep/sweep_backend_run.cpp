@@ -1,0 +1,141 @@
+#include "sweep/sweep_backend_run.h"
+
+#include <fmt/format.h>
+#include <poll.h>
+#include <signal.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "oracle/builtin_probe.h"
+#include "runner/worker_process.h"
+
+namespace snell::sweep {
+namespace {
+
+using nlohmann::json;
+
+// eval writes non-finite numbers as "nan", "inf", "-inf".
+double number(const json& x) {
+  if (x.is_number()) return x.get<double>();
+  const std::string text = x.get<std::string>();
+  if (text == "inf") return std::numeric_limits<double>::infinity();
+  if (text == "-inf") return -std::numeric_limits<double>::infinity();
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<double> numbers(const json& array) {
+  std::vector<double> out;
+  for (const json& x : array) out.push_back(number(x));
+  return out;
+}
+
+json jsonNumber(float x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  return static_cast<double>(x);  // exact: a double holds every float, and dumps round-trip
+}
+
+json jsonVector(const std::vector<float>& v) {
+  json out = json::array();
+  for (float x : v) out.push_back(jsonNumber(x));
+  return out;
+}
+
+}  // namespace
+
+BackendSweep sweepOracle(const std::vector<SweepPoint>& points) {
+  BackendSweep sweep;
+  sweep.backend = "oracle";
+  sweep.renderer = "CPU interval oracle (GLSL 4.60 rules)";
+  for (const SweepPoint& point : points) {
+    const BuiltinResult result = evaluateBuiltin(point.call, PrecisionRules::Glsl);
+    Observation o;
+    o.answered = true;
+    o.value.assign(result.strict.begin(), result.strict.end());
+    o.exact = result.value;
+    o.lo = result.lo;
+    o.hi = result.hi;
+    o.withinSpec = result.allows(result.strict);
+    for (bool open : result.undefined) o.undefined = o.undefined || open;
+    o.slack = o.withinSpec ? 0 : std::numeric_limits<double>::infinity();
+    sweep.points.push_back(std::move(o));
+  }
+  return sweep;
+}
+
+std::string evalInput(const std::vector<SweepPoint>& points) {
+  std::string text;
+  for (const SweepPoint& point : points) {
+    json line = {{"fn", point.call.fn}, {"I", jsonVector(point.call.I)},
+                 {"N", jsonVector(point.call.N)}};
+    if (point.call.fn == "refract") line["eta"] = jsonNumber(point.call.eta);
+    text += line.dump() + '\n';
+  }
+  return text;
+}
+
+Observation observationFromAnswer(const std::string& text) {
+  const json answer = json::parse(text);
+  Observation o;
+  if (answer.contains("error")) {
+    o.problem = answer.at("error").get<std::string>();
+    return o;
+  }
+  o.answered = true;
+  o.value = numbers(answer.at("value"));
+  o.exact = numbers(answer.at("exact"));
+  o.lo = numbers(answer.at("lo"));
+  o.hi = numbers(answer.at("hi"));
+  o.withinSpec = answer.at("within_spec").get<bool>();
+  o.slack = number(answer.at("slack"));
+  if (answer.contains("undefined"))
+    for (const json& open : answer.at("undefined")) o.undefined = o.undefined || open.get<bool>();
+  return o;
+}
+
+BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
+                         const std::filesystem::path& inputFile, std::size_t pointCount,
+                         double timeoutSeconds) {
+  signal(SIGPIPE, SIG_IGN);
+  BackendSweep sweep;
+  sweep.backend = backend;
+  sweep.points.resize(pointCount);
+  WorkerProcess child({executable, "eval", "--backend", backend, inputFile.string()});
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(timeoutSeconds));
+  std::size_t answered = 0;
+  while (!child.stdoutClosed()) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) break;
+    std::vector<pollfd> fds = {{child.stdoutFd(), POLLIN, 0}};
+    if (child.stderrFd() >= 0) fds.push_back({child.stderrFd(), POLLIN, 0});
+    poll(fds.data(), fds.size(), static_cast<int>(left.count()) + 1);
+    if (fds.size() > 1 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR))) child.drainStderr();
+    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    for (const std::string& line : child.readLines()) {
+      if (answered >= pointCount) break;
+      try {
+        sweep.points[answered] = observationFromAnswer(line);
+      } catch (const json::exception& error) {
+        sweep.points[answered].problem = fmt::format("unreadable answer: {}", error.what());
+      }
+      ++answered;
+    }
+  }
+  const bool hung = !child.stdoutClosed();
+  const std::string how = child.finish(hung);
+  const std::string problem =
+      hung ? fmt::format("no answer within {:.0f} s", timeoutSeconds)
+           : fmt::format("snell eval --backend {} ended ({}) before answering: {}", backend, how,
+                         child.stderrTail(3));
+  for (std::size_t k = answered; k < pointCount; ++k) sweep.points[k].problem = problem;
+  return sweep;
+}
+
+}  // namespace snell::sweep
