@@ -71,8 +71,8 @@ Command addSweepCommand(CLI::App& app) {
     sweep::SweepResult result = sweep::runSweep(sweepOptions);
     for (std::size_t k = 0; k < probes.size(); ++k)
       result.sweeps[k + 1].renderer = probes[k].driver.renderer;
-    const fs::path json = options->json.empty() ? fs::path(options->out) / "sweep.json"
-                                                : fs::path(options->json);
+    const fs::path json =
+        options->json.empty() ? fs::path(options->out) / "sweep.json" : fs::path(options->json);
     sweep::writeSweepJson(result, json);
     sweep::printSweepTable(result, stdout);
     if (!options->noCharts)

@@ -11,16 +11,17 @@ namespace snell::sweep {
 
 struct CriticalAngle {
   std::string backend;
-  double eta = 0;                 // n1 / n2 > 1
-  double closedFormDegrees = 0;   // asin(n2 / n1), the physics reference
+  double eta = 0;                   // n1 / n2 > 1
+  double closedFormDegrees = 0;     // asin(n2 / n1), the physics reference
   double lastRefractedDegrees = 0;  // largest angle with a non-zero result below the switch
-  double firstZeroDegrees = 0;    // smallest angle with the zero vector
-  double foundDegrees = 0;        // midpoint of the two
-  double resolutionDegrees = 0;   // their distance
+  double firstZeroDegrees = 0;      // smallest angle with the zero vector
+  double foundDegrees = 0;          // midpoint of the two
+  double resolutionDegrees = 0;     // their distance
   // Half-width of the band around the closed form where the spec allows
   // either way (k's interval straddles 0): a backend may switch anywhere in it.
   double specBandDegrees = 0;
-  int wrongSide = 0;  // points on the wrong side of the closed form where the spec allows only one way
+  int wrongSide =
+      0;  // points on the wrong side of the closed form where the spec allows only one way
   // One clean step, no point on the wrong side, and the switch within half
   // the resolution (plus the spec's band) of the closed form.
   bool agrees = false;

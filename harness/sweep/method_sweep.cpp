@@ -46,8 +46,13 @@ std::vector<MethodSample> methodSweep(const SweepGrid& grid) {
 std::vector<Break> methodBreaks(const std::vector<MethodSample>& series, std::size_t firstIndex) {
   std::vector<Break> breaks;
   auto add = [&](std::size_t k, const char* kind, std::string detail) {
-    breaks.push_back({series[k].method, "physics", firstIndex + k, kind, BreakClass::Method,
-                      std::move(detail), {series[k].value, series[k].exact}});
+    breaks.push_back({series[k].method,
+                      "physics",
+                      firstIndex + k,
+                      kind,
+                      BreakClass::Method,
+                      std::move(detail),
+                      {series[k].value, series[k].exact}});
   };
   for (std::size_t k = 0; k < series.size(); ++k) {
     const MethodSample& s = series[k];

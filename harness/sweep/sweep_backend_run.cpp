@@ -70,8 +70,8 @@ BackendSweep sweepOracle(const std::vector<SweepPoint>& points) {
 std::string evalInput(const std::vector<SweepPoint>& points) {
   std::string text;
   for (const SweepPoint& point : points) {
-    json line = {{"fn", point.call.fn}, {"I", jsonVector(point.call.I)},
-                 {"N", jsonVector(point.call.N)}};
+    json line = {
+        {"fn", point.call.fn}, {"I", jsonVector(point.call.I)}, {"N", jsonVector(point.call.N)}};
     if (point.call.fn == "refract") line["eta"] = jsonNumber(point.call.eta);
     text += line.dump() + '\n';
   }

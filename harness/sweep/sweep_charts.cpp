@@ -22,7 +22,9 @@ struct Curve {
 // Letters, digits, '.', '-' and '_' only: a gnuplot string and a file name.
 std::string safe(const std::string& text) {
   std::string out;
-  for (char c : text) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '-';
+  for (char c : text)
+    out +=
+        (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '-';
   return out;
 }
 
@@ -65,18 +67,19 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
               const std::vector<Curve>& curves) {
   if (curves.empty()) return;
   const std::string body = settings + plotCommands(curves);
+  batch.add(
+      fmt::format("set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone\n"
+                  "set output '{}.svg'\n{}",
+                  stem, body));
   batch.add(fmt::format(
-      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone\n"
-      "set output '{}.svg'\n{}",
-      stem, body));
-  batch.add(fmt::format("set terminal pngcairo size 900,540 font 'sans,10'\nset output '{}.png'\n{}",
-                        stem, body));
+      "set terminal pngcairo size 900,540 font 'sans,10'\nset output '{}.png'\n{}", stem, body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
 }
 
 bool charted(double eta) {
-  return std::abs(eta - 0.66) < 1e-9 || std::abs(eta - 1.5) < 1e-9 || std::abs(eta - 1 / 1.5) < 1e-9;
+  return std::abs(eta - 0.66) < 1e-9 || std::abs(eta - 1.5) < 1e-9 ||
+         std::abs(eta - 1 / 1.5) < 1e-9;
 }
 
 }  // namespace
@@ -92,7 +95,8 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       if (p.call.fn == "refract" && charted(p.eta))
         data.add(fmt::format("slack/refract/{} eta {:.4g}", sweep.backend, p.eta), p.angleDegrees,
                  o.slack);
-      if (p.call.fn == "reflect") data.add("slack/reflect/" + sweep.backend, p.angleDegrees, o.slack);
+      if (p.call.fn == "reflect")
+        data.add("slack/reflect/" + sweep.backend, p.angleDegrees, o.slack);
     }
   }
   for (const MethodSample& s : result.methodSamples)
@@ -111,11 +115,13 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
 
   GnuplotBatch batch(outDir);
   std::vector<fs::path> written;
-  const std::string angleAxis = "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\n"
-                                "set key outside right\n";
+  const std::string angleAxis =
+      "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\n"
+      "set key outside right\n";
   addChart(batch, written, outDir, "sweep-refract-slack",
-           angleAxis + "set title 'refract(): slack (error / allowed error) against angle'\n"
-                       "set ylabel 'slack (1 = edge of the spec)'\n",
+           angleAxis +
+               "set title 'refract(): slack (error / allowed error) against angle'\n"
+               "set ylabel 'slack (1 = edge of the spec)'\n",
            data.curves("slack/refract/", "with linespoints pt 7 ps 0.3"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
            angleAxis + "set title 'reflect(): slack against angle'\nset ylabel 'slack'\n",
@@ -128,9 +134,10 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
                                    kMethodErrorBound, kMethodErrorBound, kMethodErrorBound,
                                    kMethodErrorBound, kMethodErrorBound),
            data.curves("error/", "with lines lw 1.5"));
-  const std::string mapAxes = "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
-                              "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
-                              "set key outside right\n";
+  const std::string mapAxes =
+      "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
+      "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
+      "set key outside right\n";
   addChart(batch, written, outDir, "sweep-map-refract",
            mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
            data.curves("map/refract/", "with points pt 7 ps 0.4"));

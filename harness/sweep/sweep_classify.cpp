@@ -54,8 +54,8 @@ bool inputsFinite(const SweepPoint& point) {
          (point.call.fn != "refract" || std::isfinite(point.call.eta));
 }
 
-std::vector<Break> classifyPoint(const SweepPoint& point, std::size_t index,
-                                 const Observation& o, const std::string& backend) {
+std::vector<Break> classifyPoint(const SweepPoint& point, std::size_t index, const Observation& o,
+                                 const std::string& backend) {
   std::vector<Break> breaks;
   if (!o.answered) {
     breaks.push_back(
@@ -67,10 +67,10 @@ std::vector<Break> classifyPoint(const SweepPoint& point, std::size_t index,
     // Allowed where the input is not finite, the oracle leaves a component
     // open, or the interval itself reaches infinity (an overflow).
     const bool allowed = open || o.withinSpec;
-    breaks.push_back(makeBreak(point, index, backend, "nan_or_inf_output",
-                               allowed ? BreakClass::Undefined : BreakClass::Implementation,
-                               allowed ? "the spec allows it here" : "finite inputs, outside the spec",
-                               o.value));
+    breaks.push_back(makeBreak(
+        point, index, backend, "nan_or_inf_output",
+        allowed ? BreakClass::Undefined : BreakClass::Implementation,
+        allowed ? "the spec allows it here" : "finite inputs, outside the spec", o.value));
   }
   if (!o.withinSpec && !anyNonFinite(o.value)) {
     breaks.push_back(makeBreak(point, index, backend, "outside_spec",

@@ -19,10 +19,11 @@ enum class BreakClass { Implementation, Undefined, Method };
 const char* breakClassName(BreakClass c);
 
 struct Break {
-  std::string function;  // "refract", "reflect", or a Fresnel method
-  std::string backend;   // "oracle", "gl", "vk", "gl|vk" for a disagreement, "physics" for methods
+  std::string function;   // "refract", "reflect", or a Fresnel method
+  std::string backend;    // "oracle", "gl", "vk", "gl|vk" for a disagreement, "physics" for methods
   std::size_t point = 0;  // index into the sweep's points (builtins)
-  std::string kind;  // crash, nan_or_inf_output, outside_spec, zero_vector_direction, backend_disagreement, discontinuity, ...
+  std::string kind;       // crash, nan_or_inf_output, outside_spec, zero_vector_direction,
+                          // backend_disagreement, discontinuity, ...
   BreakClass cls = BreakClass::Implementation;
   std::string detail;
   std::vector<double> value;
@@ -44,7 +45,8 @@ std::vector<Break> disagreements(const std::vector<SweepPoint>& points, const Ba
 // Along each grid series (one function, one eta, by angle): a jump between
 // neighbours larger than the exact function's own jump plus both intervals'
 // widths, which no pair of results within the spec can make.
-std::vector<Break> discontinuities(const std::vector<SweepPoint>& points, const BackendSweep& sweep);
+std::vector<Break> discontinuities(const std::vector<SweepPoint>& points,
+                                   const BackendSweep& sweep);
 
 // Everything above for every backend (and every pair of backends).
 std::vector<Break> classifySweep(const std::vector<SweepPoint>& points,

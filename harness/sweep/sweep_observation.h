@@ -8,8 +8,9 @@ namespace snell::sweep {
 struct Observation {
   bool answered = false;  // false: the backend crashed or hung before answering
   std::string problem;    // when not answered: how the backend ended
-  std::vector<double> value;  // the backend's fp32 result (the oracle's: its strict fp32 evaluation)
-  std::vector<double> exact;  // exact math on the fp32 inputs
+  std::vector<double>
+      value;  // the backend's fp32 result (the oracle's: its strict fp32 evaluation)
+  std::vector<double> exact;   // exact math on the fp32 inputs
   std::vector<double> lo, hi;  // the spec's interval, hull over the ways a branch may go
   bool withinSpec = false;
   bool undefined = false;  // the spec leaves some component open (NaN input, say)

@@ -11,8 +11,9 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Every eta that appears in the catalog's sources (issue 15's list).
-const std::vector<double> kSourceEtas = {0.6,  0.65, 0.66, 0.67, 0.69, 1 / 1.1, 1 / 1.097, 1 / 1.103,
-                                         1.02, 0.98, 1.03, 1.06, 1.09, 0.3,     0.9};
+const std::vector<double> kSourceEtas = {0.6,     0.65,      0.66,      0.67, 0.69,
+                                         1 / 1.1, 1 / 1.097, 1 / 1.103, 1.02, 0.98,
+                                         1.03,    1.06,      1.09,      0.3,  0.9};
 
 void sortUnique(std::vector<double>& values) {
   std::sort(values.begin(), values.end());
@@ -136,7 +137,8 @@ std::vector<double> anglesFor(const SweepGrid& grid, double eta) {
 std::vector<SweepPoint> sweepPoints(const SweepGrid& grid) {
   std::vector<SweepPoint> points;
   for (double eta : grid.etas)
-    for (double degrees : anglesFor(grid, eta)) points.push_back(gridPoint("refract", degrees, eta));
+    for (double degrees : anglesFor(grid, eta))
+      points.push_back(gridPoint("refract", degrees, eta));
   for (double degrees : grid.angles) points.push_back(gridPoint("reflect", degrees, 1.0));
   for (double eta : {0.66, 1.5}) addBadInputs(points, "refract", eta);
   addBadInputs(points, "reflect", 1.0);

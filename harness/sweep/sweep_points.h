@@ -18,8 +18,8 @@ struct SweepPoint {
 };
 
 struct SweepGrid {
-  std::vector<double> etas;           // refract's eta values
-  std::vector<double> angles;         // degrees, shared by every eta
+  std::vector<double> etas;             // refract's eta values
+  std::vector<double> angles;           // degrees, shared by every eta
   std::vector<double> criticalOffsets;  // radians either side of each critical angle
 };
 

@@ -34,11 +34,11 @@ json floats(const std::vector<float>& v) {
 
 json builtinBreak(const SweepResult& result, const Break& b) {
   const SweepPoint& p = result.points[b.point];
-  json out = {{"function", b.function},   {"backend", b.backend},
-              {"input", p.input},         {"angle_deg", p.angleDegrees},
-              {"I", floats(p.call.I)},    {"N", floats(p.call.N)},
-              {"value", numbers(b.value)}, {"kind", b.kind},
-              {"class", breakClassName(b.cls)}, {"detail", b.detail}};
+  json out = {
+      {"function", b.function},      {"backend", b.backend},  {"input", p.input},
+      {"angle_deg", p.angleDegrees}, {"I", floats(p.call.I)}, {"N", floats(p.call.N)},
+      {"value", numbers(b.value)},   {"kind", b.kind},        {"class", breakClassName(b.cls)},
+      {"detail", b.detail}};
   if (p.call.fn == "refract") {
     out["eta"] = p.eta;
     out["eta_fp32"] = number(p.call.eta);
@@ -48,10 +48,18 @@ json builtinBreak(const SweepResult& result, const Break& b) {
 
 json methodBreak(const SweepResult& result, const Break& b) {
   const MethodSample& s = result.methodSamples[b.point];
-  return {{"method", s.method}, {"backend", b.backend},   {"eta", s.eta},
-          {"n1", s.n1},         {"n2", s.n2},             {"angle_deg", s.angleDegrees},
-          {"value", s.value},   {"exact", s.exact},       {"error", s.error()},
-          {"kind", b.kind},     {"class", breakClassName(b.cls)}, {"detail", b.detail}};
+  return {{"method", s.method},
+          {"backend", b.backend},
+          {"eta", s.eta},
+          {"n1", s.n1},
+          {"n2", s.n2},
+          {"angle_deg", s.angleDegrees},
+          {"value", s.value},
+          {"exact", s.exact},
+          {"error", s.error()},
+          {"kind", b.kind},
+          {"class", breakClassName(b.cls)},
+          {"detail", b.detail}};
 }
 
 }  // namespace
@@ -109,12 +117,14 @@ void printSweepTable(const SweepResult& result, std::FILE* file) {
     const std::string angles = g.angleMin == g.angleMax
                                    ? fmt::format("{:.6g}", g.angleMin)
                                    : fmt::format("{:.6g}-{:.6g}", g.angleMin, g.angleMax);
-    const std::string etas = g.etaMin == g.etaMax ? fmt::format("{:.4g}", g.etaMin)
-                                                  : fmt::format("{:.4g}-{:.4g}", g.etaMin, g.etaMax);
-    fmt::print(file, "{:<19} {:<12} {:<21} {:<22} {:<14} {:>6}  {:<19} {}\n", g.function,
-               g.backend, g.input, g.kind, g.cls, g.count, angles, etas);
+    const std::string etas = g.etaMin == g.etaMax
+                                 ? fmt::format("{:.4g}", g.etaMin)
+                                 : fmt::format("{:.4g}-{:.4g}", g.etaMin, g.etaMax);
+    fmt::print(file, "{:<19} {:<12} {:<21} {:<22} {:<14} {:>6}  {:<19} {}\n", g.function, g.backend,
+               g.input, g.kind, g.cls, g.count, angles, etas);
   }
-  fmt::print(file, "\ncritical angles (refract switches to the zero vector; closed form asin(1/eta)):\n");
+  fmt::print(file,
+             "\ncritical angles (refract switches to the zero vector; closed form asin(1/eta)):\n");
   fmt::print(file, "{:<8} {:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>6}  {}\n", "backend", "eta",
              "closed form", "found", "difference", "resolution", "spec band", "wrong", "agrees");
   for (const CriticalAngle& c : result.criticalAngles)

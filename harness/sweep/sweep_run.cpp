@@ -29,8 +29,7 @@ SweepResult runSweep(const SweepOptions& options) {
   {
     std::ofstream file(input);
     file << evalInput(result.points);
-    if (!file)
-      throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
+    if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
   }
   for (const std::string& backend : options.backends)
     result.sweeps.push_back(sweepDriver(options.executable, backend, input, result.points.size(),

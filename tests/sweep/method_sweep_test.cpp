@@ -48,12 +48,14 @@ TEST(MethodSweep, ConstantWeightBreaksTowardGrazing) {
 
 TEST(MethodSweep, PhysicalRangeViolationsAreFlagged) {
   std::vector<MethodSample> bad = series("exact", 1 / 1.5);
-  bad[10].value = 1.2;                            // weight above 1
-  bad[20].value = bad[19].value - 0.001;          // falls toward grazing
-  bad[20].exact = bad[20].value;                  // small error: only the fall is wrong
+  bad[10].value = 1.2;                    // weight above 1
+  bad[20].value = bad[19].value - 0.001;  // falls toward grazing
+  bad[20].exact = bad[20].value;          // small error: only the fall is wrong
   const std::vector<Break> breaks = methodBreaks(bad, 0);
-  EXPECT_TRUE(flagged(breaks, "weight_outside_0_1", bad[10].angleDegrees, bad[10].angleDegrees, bad));
-  EXPECT_TRUE(flagged(breaks, "falls_toward_grazing", bad[20].angleDegrees, bad[20].angleDegrees, bad));
+  EXPECT_TRUE(
+      flagged(breaks, "weight_outside_0_1", bad[10].angleDegrees, bad[10].angleDegrees, bad));
+  EXPECT_TRUE(
+      flagged(breaks, "falls_toward_grazing", bad[20].angleDegrees, bad[20].angleDegrees, bad));
 }
 
 TEST(MethodSweep, ClassifyMethodsIndexesTheWholeSweep) {

@@ -79,13 +79,13 @@ TEST(SweepClassify, AWrongBackendValueIsAnImplementationBreak) {
   EXPECT_TRUE(has(classifyPoint(point, 0, o, "gl"), "outside_spec", BreakClass::Implementation));
 
   BackendSweep good{"vk", "", {right}}, bad{"gl", "", {o}};
-  EXPECT_TRUE(has(disagreements({point}, good, bad), "backend_disagreement",
-                  BreakClass::Implementation));
+  EXPECT_TRUE(
+      has(disagreements({point}, good, bad), "backend_disagreement", BreakClass::Implementation));
   EXPECT_TRUE(disagreements({point}, good, good).empty());
 
   // A NaN where the inputs are finite and the spec gives a number.
-  EXPECT_TRUE(has(classifyPoint(point, 0, withValue(point, {NAN, 0, 0}), "gl"),
-                  "nan_or_inf_output", BreakClass::Implementation));
+  EXPECT_TRUE(has(classifyPoint(point, 0, withValue(point, {NAN, 0, 0}), "gl"), "nan_or_inf_output",
+                  BreakClass::Implementation));
 }
 
 TEST(SweepClassify, AJumpNoSlopeAllowsIsADiscontinuity) {
@@ -112,8 +112,11 @@ TEST(SweepClassify, NoNaNOrInfiniteInputStopsTheSweep) {
   ASSERT_EQ(oracle.points.size(), bad.size());
   for (const Observation& o : oracle.points) EXPECT_TRUE(o.answered);
   const std::vector<Break> breaks = classifySweep(bad, {oracle});
-  for (const Break& b : breaks)
-    if (!inputsFinite(bad[b.point])) EXPECT_EQ(b.cls, BreakClass::Undefined) << b.kind;
+  for (const Break& b : breaks) {
+    if (!inputsFinite(bad[b.point])) {
+      EXPECT_EQ(b.cls, BreakClass::Undefined) << b.kind;
+    }
+  }
 }
 
 TEST(SweepClassify, ReadsEvalAnswersWithNonFiniteNumbers) {
