@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <chrono>
 #include <filesystem>
 
 #include "backends/backend_registry.h"
@@ -55,6 +56,7 @@ Command addSweepCommand(CLI::App& app) {
       "break was found.");
   return [options] {
     namespace fs = std::filesystem;
+    const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;
@@ -81,7 +83,9 @@ Command addSweepCommand(CLI::App& app) {
     fmt::print("{} points on {} backend(s) and the oracle, {} Fresnel method samples; JSON: {}\n",
                result.points.size(), sweepOptions.backends.size(), result.methodSamples.size(),
                json.string());
-    fmt::print("wall time: {:.1f} s\n", result.wallSeconds);
+    fmt::print("wall time: {:.1f} s (sweep and classification {:.1f} s)\n",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+               result.wallSeconds);
     bool implementation = false;
     for (const sweep::Break& b : result.breaks)
       implementation = implementation || b.cls == sweep::BreakClass::Implementation;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include "oracle/physics/interface_angles.h"
 
@@ -36,6 +37,8 @@ std::vector<CriticalAngle> criticalAngles(const std::vector<SweepPoint>& points,
     c.backend = sweep.backend;
     c.eta = eta;
     c.closedFormDegrees = physics::criticalAngleDegrees(eta, 1.0);
+    const double tangent = std::tan(c.closedFormDegrees * std::numbers::pi / 180.0);
+    c.inputRoundingDegrees = std::ldexp(tangent + 1.0 / tangent, -24) * 180.0 / std::numbers::pi;
     c.firstZeroDegrees = std::numeric_limits<double>::infinity();
     c.lastRefractedDegrees = -1;
     for (std::size_t k : members) {
@@ -45,6 +48,7 @@ std::vector<CriticalAngle> criticalAngles(const std::vector<SweepPoint>& points,
       const bool zero = isZero(o);
       if (zero) c.firstZeroDegrees = std::min(c.firstZeroDegrees, angle);
       if (!zero) c.lastRefractedDegrees = std::max(c.lastRefractedDegrees, angle);
+      if (std::abs(angle - c.closedFormDegrees) <= c.inputRoundingDegrees) continue;
       if (bothWaysAllowed(oracle.points[k])) {
         c.specBandDegrees = std::max(c.specBandDegrees, std::abs(angle - c.closedFormDegrees));
         continue;
@@ -56,7 +60,7 @@ std::vector<CriticalAngle> criticalAngles(const std::vector<SweepPoint>& points,
     c.resolutionDegrees = c.firstZeroDegrees - c.lastRefractedDegrees;
     c.agrees = c.wrongSide == 0 && c.resolutionDegrees > 0 && std::isfinite(c.resolutionDegrees) &&
                std::abs(c.foundDegrees - c.closedFormDegrees) <=
-                   0.5 * c.resolutionDegrees + c.specBandDegrees;
+                   0.5 * c.resolutionDegrees + c.specBandDegrees + c.inputRoundingDegrees;
     found.push_back(c);
   }
   return found;

@@ -20,10 +20,17 @@ struct CriticalAngle {
   // Half-width of the band around the closed form where the spec allows
   // either way (k's interval straddles 0): a backend may switch anywhere in it.
   double specBandDegrees = 0;
+  // How far rounding eta and I to fp32 can move the switch: with N = (0, 1, 0),
+  // k = 1 - eta^2 (1 - I.y^2); a relative error a in eta moves the critical
+  // angle by a tan(theta_c), one b in I.y = -cos(theta) by b / tan(theta_c);
+  // |a|, |b| <= 2^-24. Points closer than this to the closed form may fall
+  // either way.
+  double inputRoundingDegrees = 0;
   int wrongSide =
       0;  // points on the wrong side of the closed form where the spec allows only one way
   // One clean step, no point on the wrong side, and the switch within half
-  // the resolution (plus the spec's band) of the closed form.
+  // the resolution (plus the spec's band and the input rounding) of the
+  // closed form.
   bool agrees = false;
 };
 

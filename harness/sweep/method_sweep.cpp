@@ -15,6 +15,8 @@ const std::vector<std::string>& methodNames() {
   return names;
 }
 
+const char* sideName(double eta) { return eta > 1 ? "n1>n2" : eta < 1 ? "n1<n2" : "n1=n2"; }
+
 MethodSample methodSample(const std::string& method, double eta, double angleDegrees) {
   MethodSample s;
   s.method = method;

@@ -30,6 +30,10 @@ struct MethodSample {
 
 const std::vector<std::string>& methodNames();
 
+// Which side the light comes from: "n1>n2" (the dense side, where total
+// internal reflection happens), "n1<n2" or "n1=n2".
+const char* sideName(double eta);
+
 // Light from n1 into n2 with n1 / n2 = eta: glass to air (n2 = 1) for eta > 1,
 // air to glass (n1 = 1) otherwise.
 MethodSample methodSample(const std::string& method, double eta, double angleDegrees);

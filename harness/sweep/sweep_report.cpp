@@ -89,6 +89,7 @@ void writeSweepJson(const SweepResult& result, const std::filesystem::path& path
                         {"first_zero_deg", number(c.firstZeroDegrees)},
                         {"resolution_deg", number(c.resolutionDegrees)},
                         {"spec_band_deg", c.specBandDegrees},
+                        {"input_rounding_deg", c.inputRoundingDegrees},
                         {"wrong_side_points", c.wrongSide},
                         {"agrees", c.agrees}});
   out["critical_angles"] = critical;
@@ -125,13 +126,16 @@ void printSweepTable(const SweepResult& result, std::FILE* file) {
   }
   fmt::print(file,
              "\ncritical angles (refract switches to the zero vector; closed form asin(1/eta)):\n");
-  fmt::print(file, "{:<8} {:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>6}  {}\n", "backend", "eta",
-             "closed form", "found", "difference", "resolution", "spec band", "wrong", "agrees");
+  fmt::print(file, "{:<8} {:>8} {:>13} {:>13} {:>11} {:>11} {:>11} {:>11} {:>6}  {}\n", "backend",
+             "eta", "closed form", "found", "difference", "resolution", "spec band", "fp32 input",
+             "wrong", "agrees");
   for (const CriticalAngle& c : result.criticalAngles)
-    fmt::print(file, "{:<8} {:>8.5g} {:>13.7f} {:>13.7f} {:>11.2e} {:>11.2e} {:>11.2e} {:>6}  {}\n",
-               c.backend, c.eta, c.closedFormDegrees, c.foundDegrees,
-               c.foundDegrees - c.closedFormDegrees, c.resolutionDegrees, c.specBandDegrees,
-               c.wrongSide, c.agrees ? "yes" : "NO");
+    fmt::print(
+        file,
+        "{:<8} {:>8.5g} {:>13.7f} {:>13.7f} {:>11.2e} {:>11.2e} {:>11.2e} {:>11.2e} {:>6}  {}\n",
+        c.backend, c.eta, c.closedFormDegrees, c.foundDegrees, c.foundDegrees - c.closedFormDegrees,
+        c.resolutionDegrees, c.specBandDegrees, c.inputRoundingDegrees, c.wrongSide,
+        c.agrees ? "yes" : "NO");
 }
 
 }  // namespace snell::sweep

@@ -28,7 +28,7 @@ std::vector<BreakGroup> groupBreaks(const SweepResult& result) {
   }
   for (const Break& b : result.methodBreaks) {
     const MethodSample& s = result.methodSamples[b.point];
-    add(b, "grid", s.angleDegrees, s.eta);
+    add(b, sideName(s.eta), s.angleDegrees, s.eta);
   }
   std::vector<BreakGroup> out;
   for (auto& [key, group] : groups) out.push_back(group);

@@ -29,7 +29,11 @@ TEST(CriticalAngle, OracleSwitchesAtTheClosedFormForSeveralEtas) {
     EXPECT_EQ(c.wrongSide, 0);
     // The grid brackets each critical angle with points 5e-7 rad either side.
     EXPECT_LE(c.resolutionDegrees, 1e-6 * 180.0 / std::numbers::pi * 1.0001);
-    EXPECT_NEAR(c.foundDegrees, closed, 0.5 * c.resolutionDegrees + c.specBandDegrees);
+    const double tangent = std::tan(closed * std::numbers::pi / 180.0);
+    EXPECT_DOUBLE_EQ(c.inputRoundingDegrees,
+                     std::ldexp(tangent + 1 / tangent, -24) * 180.0 / std::numbers::pi);
+    EXPECT_NEAR(c.foundDegrees, closed,
+                0.5 * c.resolutionDegrees + c.specBandDegrees + c.inputRoundingDegrees);
   }
   EXPECT_NEAR(found[3].foundDegrees, 41.81, 0.005);  // n = 1.5
 }
