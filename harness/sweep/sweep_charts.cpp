@@ -68,11 +68,11 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
   if (curves.empty()) return;
   const std::string body = settings + plotCommands(curves);
   batch.add(
-      fmt::format("set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone\n"
+      fmt::format("set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced\n"
                   "set output '{}.svg'\n{}",
                   stem, body));
   batch.add(fmt::format(
-      "set terminal pngcairo size 900,540 font 'sans,10'\nset output '{}.png'\n{}", stem, body));
+      "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem, body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
 }
@@ -122,10 +122,10 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
            angleAxis +
                "set title 'refract(): slack (error / allowed error) against angle'\n"
                "set ylabel 'slack (1 = edge of the spec)'\n",
-           data.curves("slack/refract/", "with linespoints pt 7 ps 0.3"));
+           data.curves("slack/refract/", "with points pt 7 ps 0.4"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
            angleAxis + "set title 'reflect(): slack against angle'\nset ylabel 'slack'\n",
-           data.curves("slack/reflect/", "with linespoints pt 7 ps 0.3"));
+           data.curves("slack/reflect/", "with points pt 7 ps 0.4"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
                                    "(bound {})'\nset ylabel 'error'\n"
