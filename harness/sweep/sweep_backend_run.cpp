@@ -97,13 +97,15 @@ Observation observationFromAnswer(const std::string& text) {
   return o;
 }
 
-BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
-                         const std::filesystem::path& inputFile, std::size_t pointCount,
-                         double timeoutSeconds) {
-  signal(SIGPIPE, SIG_IGN);
-  BackendSweep sweep;
-  sweep.backend = backend;
-  sweep.points.resize(pointCount);
+namespace {
+
+// One `snell eval` child on `inputFile`: an observation per line, in order;
+// those it did not answer carry how the child ended. `hung` is set when it
+// was cut off at the time limit.
+std::vector<Observation> runEvalChild(const std::string& executable, const std::string& backend,
+                                      const std::filesystem::path& inputFile,
+                                      std::size_t pointCount, double timeoutSeconds, bool& hung) {
+  std::vector<Observation> observations(pointCount);
   WorkerProcess child({executable, "eval", "--backend", backend, inputFile.string()});
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -121,20 +123,79 @@ BackendSweep sweepDriver(const std::string& executable, const std::string& backe
     for (const std::string& line : child.readLines()) {
       if (answered >= pointCount) break;
       try {
-        sweep.points[answered] = observationFromAnswer(line);
+        observations[answered] = observationFromAnswer(line);
       } catch (const json::exception& error) {
-        sweep.points[answered].problem = fmt::format("unreadable answer: {}", error.what());
+        observations[answered].problem = fmt::format("unreadable answer: {}", error.what());
       }
       ++answered;
     }
   }
-  const bool hung = !child.stdoutClosed();
+  hung = !child.stdoutClosed();
   const std::string how = child.finish(hung);
   const std::string problem =
       hung ? fmt::format("no answer within {:.0f} s", timeoutSeconds)
            : fmt::format("snell eval --backend {} ended ({}) before answering: {}", backend, how,
                          child.stderrTail(3));
-  for (std::size_t k = answered; k < pointCount; ++k) sweep.points[k].problem = problem;
+  for (std::size_t k = answered; k < pointCount; ++k) observations[k].problem = problem;
+  return observations;
+}
+
+struct DriverRun {
+  const std::string& executable;
+  const std::string& backend;
+  const std::vector<SweepPoint>& points;
+  const std::filesystem::path& workDir;
+  double timeoutSeconds;
+  int childrenLeft;
+  BackendSweep& sweep;
+
+  // Runs `subset` in one child; points a crash left unanswered are run
+  // again in halves, so a crash lands on the point that causes it.
+  void run(const std::vector<std::size_t>& subset) {
+    std::vector<SweepPoint> chosen;
+    for (std::size_t k : subset) chosen.push_back(points[k]);
+    const std::filesystem::path input =
+        workDir / fmt::format("sweep-input-{}-{}.jsonl", childrenLeft, subset.size());
+    std::ofstream(input) << evalInput(chosen);
+    --childrenLeft;
+    bool hung = false;
+    const std::vector<Observation> got =
+        runEvalChild(executable, backend, input, subset.size(), timeoutSeconds, hung);
+    std::filesystem::remove(input);
+    std::vector<std::size_t> unanswered;
+    for (std::size_t k = 0; k < subset.size(); ++k) {
+      sweep.points[subset[k]] = got[k];
+      if (!got[k].answered) unanswered.push_back(subset[k]);
+    }
+    if (unanswered.empty()) return;
+    // A hang costs the whole time limit again: not narrowed down.
+    const bool narrow = !hung && unanswered.size() > 1 && childrenLeft >= 2;
+    if (!narrow) {
+      for (std::size_t k : unanswered)
+        sweep.points[k].problem +=
+            unanswered.size() == 1 ? " (this point alone)"
+                                   : fmt::format(" (in a batch of {} points)", unanswered.size());
+      return;
+    }
+    const auto middle = unanswered.begin() + static_cast<std::ptrdiff_t>(unanswered.size() / 2);
+    run({unanswered.begin(), middle});
+    run({middle, unanswered.end()});
+  }
+};
+
+}  // namespace
+
+BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
+                         const std::vector<SweepPoint>& points,
+                         const std::filesystem::path& workDir, double timeoutSeconds,
+                         int maxChildren) {
+  signal(SIGPIPE, SIG_IGN);
+  BackendSweep sweep;
+  sweep.backend = backend;
+  sweep.points.resize(points.size());
+  std::vector<std::size_t> all(points.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+  DriverRun{executable, backend, points, workDir, timeoutSeconds, maxChildren, sweep}.run(all);
   return sweep;
 }
 

@@ -3,7 +3,7 @@
 // driver through a `snell eval --backend NAME` child process: the same probe
 // path as `snell eval`, every point of a function in one draw, and a driver
 // that crashes or hangs takes only its child with it (its points become
-// Crash and the sweep goes on).
+// crash breaks and the sweep goes on).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -21,10 +21,15 @@ BackendSweep sweepOracle(const std::vector<SweepPoint>& points);
 // The points as `snell eval` input, one JSON line each (exact fp32 values).
 std::string evalInput(const std::vector<SweepPoint>& points);
 
-// `executable` is the snell binary; `inputFile` holds evalInput(points).
+// `executable` is the snell binary; each child's input is written to
+// `workDir` and removed after. When a child crashes, the points it left
+// unanswered are run again in halves (at most `maxChildren` children in
+// all), so the crash is pinned to the point that causes it; a child that
+// hangs past `timeoutSeconds` is killed and its points are not retried.
 BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
-                         const std::filesystem::path& inputFile, std::size_t pointCount,
-                         double timeoutSeconds);
+                         const std::vector<SweepPoint>& points,
+                         const std::filesystem::path& workDir, double timeoutSeconds,
+                         int maxChildren = 40);
 
 // One answer line of `snell eval` on a driver, as an observation (used by
 // sweepDriver; exposed for tests).

@@ -67,12 +67,13 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
               const std::vector<Curve>& curves) {
   if (curves.empty()) return;
   const std::string body = settings + plotCommands(curves);
-  batch.add(
-      fmt::format("set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced\n"
-                  "set output '{}.svg'\n{}",
-                  stem, body));
   batch.add(fmt::format(
-      "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem, body));
+      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced\n"
+      "set output '{}.svg'\n{}",
+      stem, body));
+  batch.add(fmt::format(
+      "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem,
+      body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
 }

@@ -32,7 +32,7 @@ SweepResult runSweep(const SweepOptions& options) {
     if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
   }
   for (const std::string& backend : options.backends)
-    result.sweeps.push_back(sweepDriver(options.executable, backend, input, result.points.size(),
+    result.sweeps.push_back(sweepDriver(options.executable, backend, result.points, options.outDir,
                                         options.timeoutSeconds));
   classifyAll(result);
   result.wallSeconds =

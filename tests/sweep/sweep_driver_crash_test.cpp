@@ -1,5 +1,6 @@
-// A driver child that crashes or hangs part-way: the points it answered
-// keep their answers, the rest become crash breaks, and the sweep returns.
+// A driver child that crashes or hangs: a crash is narrowed down to the
+// point that causes it (the others answered), a hang is cut off, and the
+// sweep returns either way.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -38,27 +39,49 @@ std::vector<SweepPoint> threePoints() {
   return points;
 }
 
-TEST(SweepDriver, ACrashAfterTheFirstAnswerMakesTheRestCrash) {
-  const fs::path script = fakeEval("crash", fmt::format("echo '{}'\nkill -SEGV $$\n", kAnswer));
-  const std::vector<SweepPoint> points = threePoints();
-  const BackendSweep sweep = sweepDriver(script.string(), "gl", "/dev/null", points.size(), 30);
+// Answers every line of its input, unless a line holds a NaN: then it dies
+// of SIGSEGV before answering anything, as a driver crashing in the draw.
+constexpr const char* kCrashesOnNaN =
+    "if grep -q nan \"$4\"; then kill -SEGV $$; fi\n"
+    "while read -r line; do echo '{}'; done < \"$4\"\n";
+
+TEST(SweepDriver, ACrashIsPinnedToThePointThatCausesItAndTheRestAreAnswered) {
+  const fs::path script = fakeEval("crash", fmt::format(kCrashesOnNaN, kAnswer));
+  std::vector<SweepPoint> points = threePoints();
+  for (const SweepPoint& p : sweepPoints(quickGrid()))
+    if (p.input == "nan-I" && p.call.fn == "reflect") points.insert(points.begin() + 1, p);
+  ASSERT_EQ(points.size(), 4u);
+  const BackendSweep sweep =
+      sweepDriver(script.string(), "gl", points, fs::temp_directory_path(), 30);
   fs::remove(script);
-  ASSERT_EQ(sweep.points.size(), 3u);
-  EXPECT_TRUE(sweep.points[0].answered);
-  for (std::size_t k = 1; k < 3; ++k) {
-    EXPECT_FALSE(sweep.points[k].answered);
-    EXPECT_NE(sweep.points[k].problem.find("signal 11"), std::string::npos)
-        << sweep.points[k].problem;
-    const std::vector<Break> breaks = classifyPoint(points[k], k, sweep.points[k], "gl");
-    ASSERT_EQ(breaks.size(), 1u);
-    EXPECT_EQ(breaks[0].kind, "crash");
-    EXPECT_EQ(breaks[0].cls, BreakClass::Implementation);
+  ASSERT_EQ(sweep.points.size(), 4u);
+  for (std::size_t k : {0, 2, 3}) EXPECT_TRUE(sweep.points[k].answered) << k;
+  EXPECT_FALSE(sweep.points[1].answered);
+  EXPECT_NE(sweep.points[1].problem.find("signal 11"), std::string::npos)
+      << sweep.points[1].problem;
+  EXPECT_NE(sweep.points[1].problem.find("this point alone"), std::string::npos);
+  const std::vector<Break> breaks = classifyPoint(points[1], 1, sweep.points[1], "gl");
+  ASSERT_EQ(breaks.size(), 1u);
+  EXPECT_EQ(breaks[0].kind, "crash");
+  EXPECT_EQ(breaks[0].cls, BreakClass::Implementation);
+}
+
+TEST(SweepDriver, NarrowingStopsAtItsBudget) {
+  const fs::path script = fakeEval("always", "kill -SEGV $$\n");
+  const BackendSweep sweep =
+      sweepDriver(script.string(), "gl", threePoints(), fs::temp_directory_path(), 30, 1);
+  fs::remove(script);
+  for (const Observation& o : sweep.points) {
+    EXPECT_FALSE(o.answered);
+    EXPECT_NE(o.problem.find("in a batch of 3 points"), std::string::npos) << o.problem;
   }
 }
 
 TEST(SweepDriver, AHungDriverIsCutOffAtItsTimeout) {
   const fs::path script = fakeEval("hang", "exec sleep 30\n");
-  const BackendSweep sweep = sweepDriver(script.string(), "gl", "/dev/null", 2, 0.5);
+  std::vector<SweepPoint> points = threePoints();
+  const BackendSweep sweep =
+      sweepDriver(script.string(), "gl", points, fs::temp_directory_path(), 0.5);
   fs::remove(script);
   for (const Observation& o : sweep.points) {
     EXPECT_FALSE(o.answered);
