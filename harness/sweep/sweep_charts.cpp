@@ -54,11 +54,20 @@ class ChartData {
   std::map<std::string, std::string> rows_;
 };
 
+// A curve whose file is empty plots its style as a gnuplot expression.
+// Point types cycle (open circle, cross, filled circle, ...) so backends
+// that break at the same points stay visible on top of each other.
 std::string plotCommands(const std::vector<Curve>& curves) {
+  static const int kPointTypes[] = {6, 2, 7, 4, 1, 8};
   std::string plot = "plot ";
-  for (std::size_t k = 0; k < curves.size(); ++k)
-    plot += fmt::format("{}'{}' using 1:2 {} title '{}'", k ? ", " : "", curves[k].file,
-                        curves[k].style, curves[k].title);
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    plot += k ? ", " : "";
+    if (curves[k].file.empty())
+      plot += fmt::format("{} title '{}'", curves[k].style, curves[k].title);
+    else
+      plot += fmt::format("'{}' using 1:2 {} pt {} title '{}'", curves[k].file, curves[k].style,
+                          kPointTypes[k % 6], curves[k].title);
+  }
   return plot + "\n";
 }
 
@@ -76,6 +85,13 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
       body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
+}
+
+// The closed-form critical angle on an angle x eta map: sin(theta_c) = 1 / eta.
+std::vector<Curve> withCriticalAngle(std::vector<Curve> curves) {
+  curves.push_back({"critical angle, eta = 1/sin(theta)", "",
+                    "(x > 23.5 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
+  return curves;
 }
 
 bool charted(double eta) {
@@ -123,10 +139,10 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
            angleAxis +
                "set title 'refract(): slack (error / allowed error) against angle'\n"
                "set ylabel 'slack (1 = edge of the spec)'\n",
-           data.curves("slack/refract/", "with points pt 7 ps 0.4"));
+           data.curves("slack/refract/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
            angleAxis + "set title 'reflect(): slack against angle'\nset ylabel 'slack'\n",
-           data.curves("slack/reflect/", "with points pt 7 ps 0.4"));
+           data.curves("slack/reflect/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
                                    "(bound {})'\nset ylabel 'error'\n"
@@ -138,15 +154,15 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
   const std::string mapAxes =
       "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
       "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
-      "set key outside right\n";
+      "set key outside right\nset samples 1000\n";
   addChart(batch, written, outDir, "sweep-map-refract",
            mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
-           data.curves("map/refract/", "with points pt 7 ps 0.4"));
+           withCriticalAngle(data.curves("map/refract/", "with points ps 0.5")));
   addChart(batch, written, outDir, "sweep-map-methods",
            mapAxes + fmt::format("set title 'Fresnel methods: breaks against exact Fresnel "
                                  "(error bound {}, physical range)'\n",
                                  kMethodErrorBound),
-           data.curves("map/method/", "with points pt 7 ps 0.4"));
+           withCriticalAngle(data.curves("map/method/", "with points ps 0.5")));
   batch.run();
   return written;
 }

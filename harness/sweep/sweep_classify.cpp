@@ -67,10 +67,13 @@ std::vector<Break> classifyPoint(const SweepPoint& point, std::size_t index, con
     // Allowed where the input is not finite, the oracle leaves a component
     // open, or the interval itself reaches infinity (an overflow).
     const bool allowed = open || o.withinSpec;
-    breaks.push_back(makeBreak(
-        point, index, backend, "nan_or_inf_output",
-        allowed ? BreakClass::Undefined : BreakClass::Implementation,
-        allowed ? "the spec allows it here" : "finite inputs, outside the spec", o.value));
+    const char* why = !inputsFinite(point) ? "a NaN or infinite input"
+                      : o.undefined        ? "the spec leaves a component open here"
+                      : o.withinSpec       ? "within the interval: an overflow the spec allows"
+                                           : "finite inputs, outside the spec";
+    breaks.push_back(makeBreak(point, index, backend, "nan_or_inf_output",
+                               allowed ? BreakClass::Undefined : BreakClass::Implementation, why,
+                               o.value));
   }
   if (!o.withinSpec && !anyNonFinite(o.value)) {
     breaks.push_back(makeBreak(point, index, backend, "outside_spec",

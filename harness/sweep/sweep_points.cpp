@@ -89,9 +89,10 @@ void addBadInputs(std::vector<SweepPoint>& points, const std::string& fn, double
   }
 }
 
-SweepGrid build(double etaStep, double angleStep, const std::vector<double>& offsets) {
+SweepGrid build(int etaStepTenths, double angleStep, const std::vector<double>& offsets) {
   SweepGrid grid;
-  for (double eta = 0.3; eta <= 2.5 + 1e-9; eta += etaStep) grid.etas.push_back(eta);
+  // In tenths, so that 1.0 is exactly 1 (summing 0.1 steps would miss it).
+  for (int tenths = 3; tenths <= 25; tenths += etaStepTenths) grid.etas.push_back(tenths / 10.0);
   grid.etas.push_back(1.0);
   grid.etas.push_back(1.5);
   grid.etas.push_back(1 / 1.5);
@@ -110,11 +111,11 @@ SweepGrid build(double etaStep, double angleStep, const std::vector<double>& off
 double criticalAngleRadians(double eta) { return std::asin(1.0 / eta); }
 
 SweepGrid fullGrid() {
-  return build(0.1, 1.0, {5e-7, 1e-6, 2e-6, 5e-6, 1e-5, 1e-4, 1e-3, 1e-2, 5e-2});
+  return build(1, 1.0, {5e-7, 1e-6, 2e-6, 5e-6, 1e-5, 1e-4, 1e-3, 1e-2, 5e-2});
 }
 
 SweepGrid quickGrid() {
-  SweepGrid grid = build(0.55, 10.0, {5e-7, 1e-5, 1e-3});
+  SweepGrid grid = build(5, 10.0, {5e-7, 1e-5, 1e-3});
   // The quick grid keeps the etas its tests name, and drops the rest of the list.
   grid.etas = {0.66, 1.0, 1.02, 1.09, 1.5, 2.5};
   return grid;
