@@ -65,8 +65,11 @@ std::string plotCommands(const std::vector<Curve>& curves) {
     if (curves[k].file.empty())
       plot += fmt::format("{} title '{}'", curves[k].style, curves[k].title);
     else
-      plot += fmt::format("'{}' using 1:2 {} pt {} title '{}'", curves[k].file, curves[k].style,
-                          kPointTypes[k % 6], curves[k].title);
+      plot += fmt::format("'{}' using 1:2 {}{} title '{}'", curves[k].file, curves[k].style,
+                          curves[k].style.find("points") != std::string::npos
+                              ? fmt::format(" pt {}", kPointTypes[k % 6])
+                              : "",
+                          curves[k].title);
   }
   return plot + "\n";
 }
@@ -138,10 +141,11 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
   addChart(batch, written, outDir, "sweep-refract-slack",
            angleAxis +
                "set title 'refract(): slack (error / allowed error) against angle'\n"
-               "set ylabel 'slack (1 = edge of the spec)'\n",
+               "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
            data.curves("slack/refract/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
-           angleAxis + "set title 'reflect(): slack against angle'\nset ylabel 'slack'\n",
+           angleAxis +
+               "set title 'reflect(): slack against angle'\nset ylabel 'slack'\nset yrange [0:*]\n",
            data.curves("slack/reflect/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
