@@ -20,6 +20,7 @@ Command addMergeCommand(CLI::App& app);
 Command addCompareCommand(CLI::App& app);
 Command addReportCommand(CLI::App& app);
 Command addDevicesCommand(CLI::App& app);
+Command addSweepCommand(CLI::App& app);
 
 // Each registered backend: its renderer and versions, or why it does not
 // come up here (asked of worker processes). Returns 0.

@@ -1,0 +1,174 @@
+#include "sweep/sweep_charts.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include "report/gnuplot_batch.h"
+
+namespace snell::sweep {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Curve {
+  std::string title;
+  std::string file;  // relative to the output folder
+  std::string style;
+};
+
+// Letters, digits, '.', '-' and '_' only: a gnuplot string and a file name.
+std::string safe(const std::string& text) {
+  std::string out;
+  for (char c : text)
+    out +=
+        (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '-';
+  return out;
+}
+
+class ChartData {
+ public:
+  explicit ChartData(fs::path outDir) : outDir_(std::move(outDir)) {
+    fs::create_directories(outDir_ / "sweep-data");
+  }
+  // Appends (x, y) to the named curve's file.
+  void add(const std::string& name, double x, double y) {
+    rows_[name] += fmt::format("{:.10g} {:.10g}\n", x, y);
+  }
+  // Writes every curve whose name starts with `prefix`; returns them, titled by the rest.
+  std::vector<Curve> curves(const std::string& prefix, const std::string& style) {
+    std::vector<Curve> out;
+    for (const auto& [name, rows] : rows_) {
+      if (name.rfind(prefix, 0) != 0) continue;
+      const std::string file = "sweep-data/" + safe(name) + ".dat";
+      std::ofstream(outDir_ / file) << rows;
+      out.push_back({name.substr(prefix.size()), file, style});
+    }
+    return out;
+  }
+
+ private:
+  fs::path outDir_;
+  std::map<std::string, std::string> rows_;
+};
+
+// A curve whose file is empty plots its style as a gnuplot expression.
+// Point types cycle (open circle, cross, filled circle, ...) so backends
+// that break at the same points stay visible on top of each other.
+std::string plotCommands(const std::vector<Curve>& curves) {
+  static const int kPointTypes[] = {6, 2, 7, 4, 1, 8};
+  std::string plot = "plot ";
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    plot += k ? ", " : "";
+    if (curves[k].file.empty())
+      plot += fmt::format("{} title '{}'", curves[k].style, curves[k].title);
+    else
+      plot += fmt::format("'{}' using 1:2 {}{} title '{}'", curves[k].file, curves[k].style,
+                          curves[k].style.find("points") != std::string::npos
+                              ? fmt::format(" pt {}", kPointTypes[k % 6])
+                              : "",
+                          curves[k].title);
+  }
+  return plot + "\n";
+}
+
+void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
+              const std::string& stem, const std::string& settings,
+              const std::vector<Curve>& curves) {
+  if (curves.empty()) return;
+  const std::string body = settings + plotCommands(curves);
+  batch.add(fmt::format(
+      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced\n"
+      "set output '{}.svg'\n{}",
+      stem, body));
+  batch.add(fmt::format(
+      "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem,
+      body));
+  written.push_back(outDir / (stem + ".svg"));
+  written.push_back(outDir / (stem + ".png"));
+}
+
+// The closed-form critical angle on an angle x eta map: sin(theta_c) = 1 / eta.
+std::vector<Curve> withCriticalAngle(std::vector<Curve> curves) {
+  curves.push_back({"critical angle, eta = 1/sin(theta)", "",
+                    "(x > 23.5 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
+  return curves;
+}
+
+bool charted(double eta) {
+  return std::abs(eta - 0.66) < 1e-9 || std::abs(eta - 1.5) < 1e-9 ||
+         std::abs(eta - 1 / 1.5) < 1e-9;
+}
+
+}  // namespace
+
+std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
+  ChartData data(outDir);
+  for (const BackendSweep& sweep : result.sweeps) {
+    if (sweep.backend == "oracle") continue;  // its slack is the reference itself
+    for (std::size_t k = 0; k < result.points.size(); ++k) {
+      const SweepPoint& p = result.points[k];
+      const Observation& o = sweep.points[k];
+      if (p.input != "grid" || !o.answered || !std::isfinite(o.slack)) continue;
+      if (p.call.fn == "refract" && charted(p.eta))
+        data.add(fmt::format("slack/refract/{} eta {:.4g}", sweep.backend, p.eta), p.angleDegrees,
+                 o.slack);
+      if (p.call.fn == "reflect")
+        data.add("slack/reflect/" + sweep.backend, p.angleDegrees, o.slack);
+    }
+  }
+  for (const MethodSample& s : result.methodSamples)
+    if (charted(s.eta) && std::abs(s.eta - 0.66) > 1e-9)
+      data.add(fmt::format("error/{} eta {:.4g}", s.method, s.eta), s.angleDegrees, s.error());
+  for (const Break& b : result.breaks) {
+    const SweepPoint& p = result.points[b.point];
+    if (p.input != "grid" || p.call.fn != "refract") continue;
+    data.add(fmt::format("map/refract/{} {} ({})", b.backend, b.kind, breakClassName(b.cls)),
+             p.angleDegrees, p.eta);
+  }
+  for (const Break& b : result.methodBreaks) {
+    const MethodSample& s = result.methodSamples[b.point];
+    data.add(fmt::format("map/method/{} {}", s.method, b.kind), s.angleDegrees, s.eta);
+  }
+
+  GnuplotBatch batch(outDir);
+  std::vector<fs::path> written;
+  const std::string angleAxis =
+      "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\n"
+      "set key outside right\n";
+  addChart(batch, written, outDir, "sweep-refract-slack",
+           angleAxis +
+               "set title 'refract(): slack (error / allowed error) against angle'\n"
+               "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
+           data.curves("slack/refract/", "with points ps 0.5"));
+  addChart(batch, written, outDir, "sweep-reflect-slack",
+           angleAxis +
+               "set title 'reflect(): slack against angle'\nset ylabel 'slack'\nset yrange [0:*]\n",
+           data.curves("slack/reflect/", "with points ps 0.5"));
+  addChart(batch, written, outDir, "sweep-method-error",
+           angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
+                                   "(bound {})'\nset ylabel 'error'\n"
+                                   "set arrow from 0,{} to 90,{} nohead dt 2\n"
+                                   "set arrow from 0,-{} to 90,-{} nohead dt 2\n",
+                                   kMethodErrorBound, kMethodErrorBound, kMethodErrorBound,
+                                   kMethodErrorBound, kMethodErrorBound),
+           data.curves("error/", "with lines lw 1.5"));
+  const std::string mapAxes =
+      "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
+      "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
+      "set key outside right\nset samples 1000\n";
+  addChart(batch, written, outDir, "sweep-map-refract",
+           mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
+           withCriticalAngle(data.curves("map/refract/", "with points ps 0.5")));
+  addChart(batch, written, outDir, "sweep-map-methods",
+           mapAxes + fmt::format("set title 'Fresnel methods: breaks against exact Fresnel "
+                                 "(error bound {}, physical range)'\n",
+                                 kMethodErrorBound),
+           withCriticalAngle(data.curves("map/method/", "with points ps 0.5")));
+  batch.run();
+  return written;
+}
+
+}  // namespace snell::sweep

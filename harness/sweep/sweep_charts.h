@@ -1,0 +1,16 @@
+#pragma once
+// A sweep's charts, drawn by one gnuplot run: error against angle per
+// backend (refract, reflect) and per Fresnel method, and maps over
+// angle x eta of where each breaks and why. SVG and PNG of each.
+#include <filesystem>
+#include <vector>
+
+#include "sweep/sweep_run.h"
+
+namespace snell::sweep {
+
+// Data files go to OUTDIR/sweep-data; returns the chart files written.
+std::vector<std::filesystem::path> writeSweepCharts(const SweepResult& result,
+                                                    const std::filesystem::path& outDir);
+
+}  // namespace snell::sweep

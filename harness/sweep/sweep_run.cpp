@@ -1,0 +1,43 @@
+#include "sweep/sweep_run.h"
+
+#include <chrono>
+#include <fstream>
+
+#include "core/errors.h"
+#include "sweep/sweep_backend_run.h"
+
+namespace snell::sweep {
+
+void classifyAll(SweepResult& result) {
+  result.breaks = classifySweep(result.points, result.sweeps);
+  result.criticalAngles.clear();
+  for (const BackendSweep& sweep : result.sweeps)
+    for (CriticalAngle& c : criticalAngles(result.points, result.sweeps.front(), sweep))
+      result.criticalAngles.push_back(c);
+  result.methodSamples = methodSweep(result.grid);
+  result.methodBreaks = classifyMethods(result.methodSamples);
+}
+
+SweepResult runSweep(const SweepOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  SweepResult result;
+  result.grid = options.quick ? quickGrid() : fullGrid();
+  result.points = sweepPoints(result.grid);
+  result.sweeps.push_back(sweepOracle(result.points));
+  std::filesystem::create_directories(options.outDir);
+  const std::filesystem::path input = options.outDir / "sweep-input.jsonl";
+  {
+    std::ofstream file(input);
+    file << evalInput(result.points);
+    if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
+  }
+  for (const std::string& backend : options.backends)
+    result.sweeps.push_back(sweepDriver(options.executable, backend, result.points, options.outDir,
+                                        options.timeoutSeconds));
+  classifyAll(result);
+  result.wallSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace snell::sweep

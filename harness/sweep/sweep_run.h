@@ -1,0 +1,41 @@
+#pragma once
+// One whole sweep: the points on the oracle and on each driver, the breaks
+// and their classes, the critical angles, and the Fresnel methods against
+// physics.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sweep/critical_angle.h"
+#include "sweep/method_sweep.h"
+#include "sweep/sweep_classify.h"
+#include "sweep/sweep_points.h"
+
+namespace snell::sweep {
+
+struct SweepOptions {
+  std::string executable;             // the snell binary, whose `eval` runs each driver
+  std::vector<std::string> backends;  // drivers; the oracle is always swept
+  std::filesystem::path outDir;       // sweep-input.jsonl goes here
+  bool quick = false;                 // quickGrid() in place of fullGrid()
+  double timeoutSeconds = 300;        // per driver
+};
+
+struct SweepResult {
+  SweepGrid grid;
+  std::vector<SweepPoint> points;
+  std::vector<BackendSweep> sweeps;  // the oracle first, then each driver
+  std::vector<Break> breaks;         // builtins, every backend
+  std::vector<CriticalAngle> criticalAngles;
+  std::vector<MethodSample> methodSamples;
+  std::vector<Break> methodBreaks;  // Break::point indexes methodSamples
+  double wallSeconds = 0;
+};
+
+SweepResult runSweep(const SweepOptions& options);
+
+// Everything after the drivers have answered (for tests that bring their own
+// observations).
+void classifyAll(SweepResult& result);
+
+}  // namespace snell::sweep

@@ -1,0 +1,75 @@
+// `snell sweep --quick` on gl and vk as a user runs it: every backend's
+// critical angles match asin(1 / eta), the bad inputs (NaN, infinity,
+// denormals, huge values, zero vectors) crash nothing, and the JSON, table,
+// charts and wall time are there.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <set>
+#include <string>
+
+#include "snell_process.h"
+
+namespace snell::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(SweepCli, QuickSweepOnGlAndVkFindsTheClosedFormCriticalAngles) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-{}", ::getpid());
+  const Outcome o = runSnell(fmt::format("sweep --quick --backend gl,vk --out {}", out.string()));
+  ASSERT_TRUE(o.code == 0 || o.code == 1) << o.out;
+  EXPECT_NE(o.out.find("wall time:"), std::string::npos);
+  EXPECT_NE(o.out.find("critical angles"), std::string::npos);
+  const nlohmann::json result = nlohmann::json::parse(readText(out / "sweep.json"));
+
+  std::set<std::string> backends;
+  for (const auto& c : result.at("critical_angles")) {
+    const std::string backend = c.at("backend").get<std::string>();
+    backends.insert(backend);
+    const double eta = c.at("eta").get<double>();
+    SCOPED_TRACE(fmt::format("{} eta {}", backend, eta));
+    const double closed = std::asin(1.0 / eta) * 180.0 / std::numbers::pi;
+    EXPECT_NEAR(c.at("closed_form_deg").get<double>(), closed, 1e-12);
+    EXPECT_TRUE(c.at("agrees").get<bool>());
+    // fp32 rounding of eta and of I.y moves the switch by up to
+    // 2^-24 (tan + 1/tan) of the critical angle (critical_angle.h).
+    const double tangent = std::tan(closed * std::numbers::pi / 180.0);
+    const double inputRounding = std::ldexp(tangent + 1 / tangent, -24) * 180.0 / std::numbers::pi;
+    EXPECT_NEAR(c.at("found_deg").get<double>(), closed,
+                0.5 * c.at("resolution_deg").get<double>() + c.at("spec_band_deg").get<double>() +
+                    inputRounding);
+    if (eta == 1.5) {
+      EXPECT_NEAR(c.at("found_deg").get<double>(), 41.81, 0.005);
+    }
+  }
+  EXPECT_EQ(backends, (std::set<std::string>{"oracle", "gl", "vk"}));
+
+  bool nanInputSeen = false;
+  for (const auto& b : result.at("breaks")) {
+    EXPECT_NE(b.at("kind"), "crash") << b.dump();
+    if (b.contains("input") && b.at("input") == "nan-I") {
+      nanInputSeen = true;
+      EXPECT_EQ(b.at("class"), "undefined") << b.dump();
+    }
+  }
+  EXPECT_TRUE(nanInputSeen);
+  for (const char* chart : {"sweep-refract-slack", "sweep-method-error", "sweep-map-refract"}) {
+    EXPECT_TRUE(fs::exists(out / (std::string(chart) + ".svg"))) << chart;
+    EXPECT_TRUE(fs::exists(out / (std::string(chart) + ".png"))) << chart;
+  }
+  fs::remove_all(out);
+}
+
+TEST(SweepCli, AnUnknownBackendIsAUsageError) {
+  const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
+  EXPECT_EQ(o.code, 2) << o.out;
+}
+
+}  // namespace
+}  // namespace snell::testing
