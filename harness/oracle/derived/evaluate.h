@@ -1,0 +1,41 @@
+#pragma once
+// Runs a derived Program (ir.h) over a batch of samples: each operation is
+// evaluated over all samples at once (a register holds one value per
+// sample, or one value for all when it depends on uniforms and literals
+// only), so the interpreter's dispatch is paid once per operation, not once
+// per sample. The arithmetic is the hand-written oracles' own:
+// oracle/glsl for double and float, interval.h and interval_builtins.h for
+// Interval, under the precision rules active on the thread.
+//
+// A condition the intervals cannot decide (inside refract(), or a
+// comparison turned into a number) takes the hull of both ways, as
+// glsl::branch does without a path explorer.
+#include <cstddef>
+#include <vector>
+
+#include "core/expected_values.h"
+#include "core/values.h"
+#include "oracle/derived/ir.h"
+#include "oracle/precision_rules.h"
+
+namespace snell::derived {
+
+// Throws UsageError naming a uniform or input the program reads that is
+// missing, has the wrong number of components or too few samples.
+void checkBindings(const Program& program, const UniformMap& uniforms, const AttributeMap& inputs,
+                   std::size_t sampleCount);
+
+// Each output's components for every sample, sample-major
+// (sampleCount * components values), in the number type T (double, float
+// or Interval). Expects checked bindings.
+template <class T>
+std::vector<std::vector<T>> evaluateProgram(const Program& program, const UniformMap& uniforms,
+                                            const AttributeMap& inputs, std::size_t sampleCount);
+
+// The three number types together, as a listing oracle reports them, under
+// `rules`. Checks the bindings first.
+std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& uniforms,
+                                            const AttributeMap& inputs, std::size_t sampleCount,
+                                            PrecisionRules rules);
+
+}  // namespace snell::derived

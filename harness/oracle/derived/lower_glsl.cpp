@@ -1,0 +1,536 @@
+#include "oracle/derived/lower_glsl.h"
+
+#include <fmt/format.h>
+#include <glslang/Include/intermediate.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <regex>
+#include <set>
+
+#include "core/errors.h"
+#include "oracle/derived/program_builder.h"
+
+namespace snell::derived {
+namespace {
+
+using ::TIntermNode;
+using glslang::TIntermAggregate;
+using glslang::TIntermBinary;
+using glslang::TIntermSymbol;
+using glslang::TIntermTyped;
+using glslang::TIntermUnary;
+
+// glslang keeps process-wide tables; they live until the process exits.
+void ensureGlslangInitialised() {
+  struct Process {
+    Process() { glslang::InitializeProcess(); }
+    ~Process() { glslang::FinalizeProcess(); }
+  };
+  static Process process;
+}
+
+// `const` blanked to spaces (see the header): the token only, not names
+// that contain it.
+std::string withoutConstQualifiers(const std::string& text) {
+  static const std::regex kConst(R"(\bconst\b)");
+  return std::regex_replace(text, kConst, "     ");
+}
+
+// A variable's storage in the lowering environment: a symbol by its
+// glslang id, or one member of an interface block (gl_Position in
+// gl_PerVertex) by block id and member.
+using Key = long long;
+Key symbolKey(const TIntermSymbol& symbol) { return static_cast<Key>(symbol.getId()); }
+Key memberKey(const TIntermSymbol& block, int member) {
+  return (static_cast<Key>(block.getId() + 1) << 8) + member + (Key{1} << 60);
+}
+
+class Lowering {
+ public:
+  Lowering(const ShaderSource& source, TIntermNode* root) : source_(source), builder_(source.file) {
+    collectFunctions(root);
+  }
+
+  Program run(const std::vector<std::string>& requested) {
+    TIntermAggregate* root = nullptr;
+    for (auto& [name, function] : functions_)
+      if (name == "main(") root = function;
+    if (!root) throw UsageError(fmt::format("{}: the shader has no main()", source_.file));
+    for (TIntermNode* global : globals_) statement(global);
+    inMain_ = true;
+    functionBody(*root, /*allowReturnValue=*/false);
+    std::vector<Variable> outputs;
+    std::vector<std::string> names = requested;
+    if (names.empty()) names = writtenOutputs_;
+    for (const std::string& name : names) outputs.push_back(output(name));
+    return builder_.finish(std::move(outputs));
+  }
+
+ private:
+  [[noreturn]] void refuse(const TIntermNode& node, const std::string& what) const {
+    throw UsageError(fmt::format(
+        "{}:{}: {} is outside the derived oracle's subset; give the listing a hand-written "
+        "oracle (manifest `oracle`) or rewrite it without that construct",
+        source_.file, node.getLoc().line, what));
+  }
+
+  void collectFunctions(TIntermNode* root) {
+    TIntermAggregate* sequence = root ? root->getAsAggregate() : nullptr;
+    if (!sequence) return;
+    for (TIntermNode* child : sequence->getSequence()) {
+      TIntermAggregate* aggregate = child->getAsAggregate();
+      if (aggregate && aggregate->getOp() == glslang::EOpFunction) {
+        functions_[aggregate->getName().c_str()] = aggregate;
+      } else if (aggregate && aggregate->getOp() == glslang::EOpLinkerObjects) {
+        continue;
+      } else {
+        globals_.push_back(child);
+      }
+    }
+  }
+
+  // --- statements -----------------------------------------------------
+
+  void statement(TIntermNode* node) {
+    if (!node) return;
+    if (TIntermAggregate* aggregate = node->getAsAggregate()) {
+      if (aggregate->getOp() == glslang::EOpSequence) {
+        // A for loop's initializer comes first in its sequence: name the loop.
+        for (TIntermNode* child : aggregate->getSequence())
+          if (child && child->getAsLoopNode()) statement(child);
+        for (TIntermNode* child : aggregate->getSequence()) statement(child);
+        return;
+      }
+    }
+    if (node->getAsLoopNode()) {
+      const glslang::TIntermLoop& loop = *node->getAsLoopNode();
+      refuse(*node, loop.getTerminal() ? "a for loop"
+                    : loop.testFirst() ? "a while loop"
+                                       : "a do-while loop");
+    }
+    if (node->getAsSelectionNode()) refuse(*node, "if/else");
+    if (node->getAsSwitchNode()) refuse(*node, "a switch");
+    if (const glslang::TIntermBranch* branch = node->getAsBranchNode()) {
+      switch (branch->getFlowOp()) {
+        case glslang::EOpReturn:
+          refuse(*node, "a return before the end of a function");
+        case glslang::EOpKill:
+          refuse(*node, "discard");
+        default:
+          refuse(*node, "break/continue");
+      }
+    }
+    // A declaration without initializer is a bare symbol: nothing to do.
+    if (node->getAsSymbolNode()) return;
+    if (TIntermTyped* typed = node->getAsTyped()) {
+      expression(*typed);
+      return;
+    }
+    refuse(*node, "this statement");
+  }
+
+  // Lowers a function's body; returns the value of its final `return`.
+  Value functionBody(TIntermAggregate& function, bool allowReturnValue) {
+    const glslang::TIntermSequence& parts = function.getSequence();
+    if (parts.size() < 2 || !parts[1]) return Value{};
+    TIntermAggregate* body = parts[1]->getAsAggregate();
+    if (!body) {
+      statement(parts[1]);
+      return Value{};
+    }
+    const glslang::TIntermSequence& statements = body->getSequence();
+    for (std::size_t k = 0; k < statements.size(); ++k) {
+      const glslang::TIntermBranch* branch = statements[k]->getAsBranchNode();
+      if (branch && branch->getFlowOp() == glslang::EOpReturn && k + 1 == statements.size()) {
+        if (!branch->getExpression()) return Value{};
+        if (!allowReturnValue) refuse(*branch, "a return value from main()");
+        return expression(*branch->getExpression());
+      }
+      statement(statements[k]);
+    }
+    return Value{};
+  }
+
+  // --- expressions ----------------------------------------------------
+
+  Value expression(TIntermTyped& node) {
+    const int line = node.getLoc().line;
+    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
+      return constantValue(*constant);
+    if (TIntermSymbol* symbol = node.getAsSymbolNode()) return read(*symbol);
+    if (TIntermBinary* binary = node.getAsBinaryNode()) return binaryExpression(*binary, line);
+    if (TIntermUnary* unary = node.getAsUnaryNode()) return unaryExpression(*unary, line);
+    if (TIntermAggregate* aggregate = node.getAsAggregate())
+      return aggregateExpression(*aggregate, line);
+    if (node.getAsSelectionNode()) refuse(node, "the ?: operator");
+    refuse(node, "this expression");
+  }
+
+  Shape shapeOf(const TIntermTyped& node) const {
+    const glslang::TType& type = node.getType();
+    if (type.isArray()) refuse(node, "an array");
+    Shape shape;
+    switch (type.getBasicType()) {
+      case glslang::EbtFloat:
+        shape.kind = Kind::Float;
+        break;
+      case glslang::EbtBool:
+        shape.kind = Kind::Bool;
+        break;
+      case glslang::EbtInt:
+      case glslang::EbtUint:
+        refuse(node, "an int value");
+      case glslang::EbtDouble:
+        refuse(node, "a double value");
+      case glslang::EbtSampler:
+        shape.kind = Kind::Opaque;
+        return shape;
+      default:
+        refuse(node, fmt::format("a value of type {}", type.getBasicTypeString().c_str()));
+    }
+    if (type.isMatrix()) {
+      shape.columns = type.getMatrixCols();
+      shape.rows = type.getMatrixRows();
+    } else {
+      shape.rows = type.getVectorSize();
+    }
+    return shape;
+  }
+
+  Value constantValue(const glslang::TIntermConstantUnion& node) {
+    const Shape shape = shapeOf(node);
+    const glslang::TConstUnionArray& data = node.getConstArray();
+    Value value{shape, {}, {}};
+    for (int k = 0; k < shape.size(); ++k) {
+      const double number =
+          shape.kind == Kind::Bool ? (data[k].getBConst() ? 1.0 : 0.0) : data[k].getDConst();
+      value.regs.push_back(builder_.literal(number, shape.kind == Kind::Bool));
+    }
+    return value;
+  }
+
+  // An int constant used as an index or a swizzle selector.
+  int constantIndex(TIntermTyped& node) const {
+    glslang::TIntermConstantUnion* constant = node.getAsConstantUnion();
+    if (!constant) refuse(node, "an index that is not a constant");
+    return constant->getConstArray()[0].getIConst();
+  }
+
+  Value read(TIntermSymbol& symbol) {
+    const Key key = symbolKey(symbol);
+    const std::string name = symbol.getName().c_str();
+    noteName(name, key);
+    auto found = variables_.find(key);
+    if (found != variables_.end()) return checkedRead(found->second, symbol);
+    const int line = symbol.getLoc().line;
+    if (name.rfind("gl_", 0) == 0) {
+      // Legacy state (gl_ModelViewMatrix, gl_Vertex, arrays such as
+      // gl_TextureMatrix) and stage built-ins.
+      Value value;
+      value.refusal = builder_.unsupported("the built-in " + name, line);
+      variables_[key] = value;
+      return value;
+    }
+    const Shape shape = shapeOf(symbol);
+    const glslang::TStorageQualifier storage = symbol.getQualifier().storage;
+    Value value{shape, {}, {}};
+    if (shape.kind == Kind::Opaque) {
+      value.refusal = fmt::format(
+          "{}:{}: the sampler {} is outside the derived oracle's subset (no texture "
+          "lookups yet)",
+          source_.file, line, name);
+    } else if (storage == glslang::EvqUniform) {
+      value.regs = builder_.uniform(name, shape.size(), line);
+    } else if (storage == glslang::EvqVaryingIn) {
+      value.regs = builder_.input(name, shape.size(), line);
+    } else {
+      refuse(symbol, fmt::format("reading {} before it is assigned", name));
+    }
+    variables_[key] = value;
+    return value;
+  }
+
+  Value checkedRead(const Value& value, const TIntermTyped& node) const {
+    if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
+      refuse(node, "reading a component before it is assigned");
+    return value;
+  }
+
+  void noteName(const std::string& name, Key key) {
+    if (inMain_ || !inFunction_) names_[name] = key;
+  }
+
+  Value binaryExpression(TIntermBinary& node, int line) {
+    using namespace glslang;
+    const TOperator op = node.getOp();
+    switch (op) {
+      case EOpAssign:
+      case EOpAddAssign:
+      case EOpSubAssign:
+      case EOpMulAssign:
+      case EOpDivAssign:
+      case EOpVectorTimesScalarAssign:
+      case EOpMatrixTimesScalarAssign:
+        return assignment(node, line);
+      case EOpVectorSwizzle: {
+        const Value base = expression(*node.getLeft());
+        std::vector<int> picks;
+        for (TIntermNode* selector : node.getRight()->getAsAggregate()->getSequence())
+          picks.push_back(constantIndex(*selector->getAsTyped()));
+        return base.pick(picks, shapeOf(node));
+      }
+      case EOpIndexDirect: {
+        const Value base = expression(*node.getLeft());
+        const int index = constantIndex(*node.getRight());
+        if (base.shape.columns > 1) return base.column(index);
+        return base.pick({index}, shapeOf(node));
+      }
+      case EOpIndexDirectStruct: {
+        const auto [key, name] = member(node);
+        noteName(name, key);
+        auto found = variables_.find(key);
+        if (found == variables_.end())
+          refuse(node, fmt::format("reading {} before it is assigned", name));
+        return checkedRead(found->second, node);
+      }
+      case EOpIndexIndirect:
+        refuse(node, "an index that is not a constant");
+      default:
+        break;
+    }
+    const Value left = expression(*node.getLeft());
+    const Value right = expression(*node.getRight());
+    return builder_.binary(op, left, right, shapeOf(node), line,
+                           [&](const std::string& what) { refuse(node, what); });
+  }
+
+  // gl_Position and the other members of an interface block, by name.
+  std::pair<Key, std::string> member(TIntermBinary& node) const {
+    TIntermSymbol* block = node.getLeft()->getAsSymbolNode();
+    if (!block) refuse(node, "a struct member");
+    const int index = constantIndex(*node.getRight());
+    const glslang::TTypeList& fields = *block->getType().getStruct();
+    return {memberKey(*block, index), fields[index].type->getFieldName().c_str()};
+  }
+
+  Value assignment(TIntermBinary& node, int line) {
+    using namespace glslang;
+    Value value = expression(*node.getRight());
+    if (node.getOp() != EOpAssign) {
+      const Value current = expression(*node.getLeft());
+      TOperator op = EOpNull;
+      switch (node.getOp()) {
+        case EOpAddAssign:
+          op = EOpAdd;
+          break;
+        case EOpSubAssign:
+          op = EOpSub;
+          break;
+        case EOpDivAssign:
+          op = EOpDiv;
+          break;
+        default:
+          op = EOpMul;
+          break;
+      }
+      if (node.getOp() == EOpMulAssign && (current.shape.columns > 1 || value.shape.columns > 1))
+        refuse(node, "a matrix *= ");
+      value = builder_.binary(op, current, value, shapeOf(*node.getLeft()), line,
+                              [&](const std::string& what) { refuse(node, what); });
+    }
+    store(*node.getLeft(), value);
+    return value;
+  }
+
+  // Writes `value` into the l-value `target` (a variable, a swizzle or a
+  // component or column of one).
+  void store(TIntermTyped& target, const Value& value) {
+    std::vector<int> positions;
+    TIntermTyped* base = &target;
+    while (true) {
+      TIntermBinary* binary = base->getAsBinaryNode();
+      if (!binary) break;
+      if (binary->getOp() == glslang::EOpIndexDirectStruct) break;
+      std::vector<int> picks;
+      const Shape baseShape = shapeOf(*binary->getLeft());
+      if (binary->getOp() == glslang::EOpVectorSwizzle) {
+        for (TIntermNode* selector : binary->getRight()->getAsAggregate()->getSequence())
+          picks.push_back(constantIndex(*selector->getAsTyped()));
+      } else if (binary->getOp() == glslang::EOpIndexDirect) {
+        const int index = constantIndex(*binary->getRight());
+        if (baseShape.columns > 1) {
+          for (int r = 0; r < baseShape.rows; ++r) picks.push_back(index * baseShape.rows + r);
+        } else {
+          picks.push_back(index);
+        }
+      } else {
+        refuse(target, "this assignment target");
+      }
+      if (positions.empty()) {
+        positions = picks;
+      } else {
+        for (int& p : positions) p = picks[static_cast<std::size_t>(p)];
+      }
+      base = binary->getLeft();
+    }
+    Key key = 0;
+    std::string name;
+    if (TIntermSymbol* symbol = base->getAsSymbolNode()) {
+      key = symbolKey(*symbol);
+      name = symbol->getName().c_str();
+      const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
+      if (storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
+          storage == glslang::EvqFragColor)
+        noteOutput(name);
+    } else if (TIntermBinary* binary = base->getAsBinaryNode()) {
+      std::tie(key, name) = member(*binary);
+      noteOutput(name);
+    } else {
+      refuse(target, "this assignment target");
+    }
+    noteName(name, key);
+    auto found = variables_.find(key);
+    if (found == variables_.end()) {
+      const Shape shape = shapeOf(*base);
+      found = variables_.emplace(key, Value{shape, std::vector<Reg>(shape.size(), kUnassigned), {}})
+                  .first;
+    }
+    Value& variable = found->second;
+    if (positions.empty()) {
+      variable = value;
+      variable.shape = shapeOf(*base);
+      return;
+    }
+    if (!value.refusal.empty()) variable.refusal = value.refusal;
+    for (std::size_t k = 0; k < positions.size(); ++k)
+      variable.regs[static_cast<std::size_t>(positions[k])] =
+          value.regs.empty() ? kUnassigned : value.regs[k];
+  }
+
+  void noteOutput(const std::string& name) {
+    if (std::find(writtenOutputs_.begin(), writtenOutputs_.end(), name) == writtenOutputs_.end())
+      writtenOutputs_.push_back(name);
+  }
+
+  Value unaryExpression(TIntermUnary& node, int line) {
+    const Value operand = expression(*node.getOperand());
+    return builder_.unary(node.getOp(), operand, shapeOf(node), line,
+                          [&](const std::string& what) { refuse(node, what); });
+  }
+
+  Value aggregateExpression(TIntermAggregate& node, int line) {
+    if (node.getOp() == glslang::EOpFunctionCall) return call(node);
+    const auto refuseHere = [&](const std::string& what) { refuse(node, what); };
+    std::vector<Value> args;
+    const bool lookup = node.isTexture() || node.isSampling() || node.isImage();
+    for (TIntermNode* child : node.getSequence()) {
+      TIntermTyped* typed = child->getAsTyped();
+      if (!typed) refuse(node, "this call");
+      if (lookup) {
+        // The arguments of a lookup still count: an unsupported one is named.
+        if (typed->getBasicType() != glslang::EbtSampler) expression(*typed);
+        continue;
+      }
+      args.push_back(expression(*typed));
+    }
+    if (lookup) {
+      Value value{shapeOf(node), {}, {}};
+      value.refusal = fmt::format(
+          "{}:{}: a texture lookup is outside the derived oracle's subset (the derived oracle "
+          "follows values up to a lookup, not through it)",
+          source_.file, line);
+      value.shape.kind = Kind::Float;
+      return value;
+    }
+    if (node.isConstructor()) return builder_.construct(shapeOf(node), args, line, refuseHere);
+    return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere);
+  }
+
+  // A user function, inlined: its `in` parameters bound to the arguments.
+  Value call(TIntermAggregate& node) {
+    auto found = functions_.find(node.getName().c_str());
+    if (found == functions_.end())
+      refuse(node, fmt::format("a call of {} (no definition)", node.getName().c_str()));
+    TIntermAggregate& function = *found->second;
+    if (std::find(callStack_.begin(), callStack_.end(), &function) != callStack_.end())
+      refuse(node, "recursion");
+    std::vector<Value> args;
+    for (TIntermNode* child : node.getSequence()) args.push_back(expression(*child->getAsTyped()));
+    const glslang::TIntermSequence& parameters =
+        function.getSequence()[0]->getAsAggregate()->getSequence();
+    for (std::size_t k = 0; k < parameters.size(); ++k) {
+      TIntermSymbol* parameter = parameters[k]->getAsSymbolNode();
+      const glslang::TStorageQualifier storage = parameter->getQualifier().storage;
+      if (storage == glslang::EvqOut || storage == glslang::EvqInOut)
+        refuse(node, fmt::format("the out/inout parameter {} of {}", parameter->getName().c_str(),
+                                 function.getName().c_str()));
+      variables_[symbolKey(*parameter)] = args[k];
+    }
+    callStack_.push_back(&function);
+    const bool wasInMain = inMain_;
+    const bool wasInFunction = inFunction_;
+    inMain_ = false;
+    inFunction_ = true;
+    Value result = functionBody(function, /*allowReturnValue=*/true);
+    inMain_ = wasInMain;
+    inFunction_ = wasInFunction;
+    callStack_.pop_back();
+    return result;
+  }
+
+  Variable output(const std::string& name) {
+    auto key = names_.find(name);
+    if (key == names_.end())
+      throw UsageError(fmt::format(
+          "{}: the derived oracle was asked for '{}', which the shader's main() does not "
+          "compute; name an output or a local of main()",
+          source_.file, name));
+    const Value& value = variables_.at(key->second);
+    if (!value.refusal.empty())
+      throw UsageError(
+          fmt::format("{} (needed for '{}'); give the listing a hand-written oracle "
+                      "(manifest `oracle`) or capture a value before it",
+                      value.refusal, name));
+    if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
+      throw UsageError(
+          fmt::format("{}: '{}' is not completely assigned by main()", source_.file, name));
+    return Variable{name, value.regs};
+  }
+
+  const ShaderSource& source_;
+  ProgramBuilder builder_;
+  std::map<std::string, TIntermAggregate*> functions_;
+  std::vector<TIntermNode*> globals_;
+  std::map<Key, Value> variables_;
+  std::map<std::string, Key> names_;
+  std::vector<std::string> writtenOutputs_;
+  std::vector<TIntermAggregate*> callStack_;
+  bool inMain_ = false;
+  bool inFunction_ = false;
+};
+
+}  // namespace
+
+Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs) {
+  ensureGlslangInitialised();
+  const std::string text = withoutConstQualifiers(source.text);
+  const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
+  glslang::TShader shader(stage);
+  const char* strings = text.c_str();
+  const int length = static_cast<int>(text.size());
+  const char* name = source.file.c_str();
+  shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+  if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault))
+    throw UsageError(
+        fmt::format("{}: glslang cannot compile the shader for the derived oracle:\n{}",
+                    source.file, shader.getInfoLog()));
+  Lowering lowering(source, shader.getIntermediate()->getTreeRoot());
+  return lowering.run(outputs);
+}
+
+}  // namespace snell::derived

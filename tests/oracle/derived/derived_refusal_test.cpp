@@ -1,0 +1,120 @@
+// What the derived oracle's front end refuses, and how: one UsageError
+// naming the construct and FILE:LINE.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.h"
+#include "derived_listings.h"
+
+namespace snell::test {
+namespace {
+
+std::string refusalOf(const std::string& text, derived::Stage stage = derived::Stage::Vertex,
+                      const std::vector<std::string>& outputs = {}) {
+  try {
+    derived::lowerShader({"user.vert", text, stage}, outputs);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool mentions(const std::string& message, const std::string& part) {
+  return message.find(part) != std::string::npos;
+}
+
+TEST(DerivedRefusal, AWhileLoopIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 140
+in vec4 position;
+out float t;
+void main() {
+  t = 0.0;
+  while (t < 1.0)
+    t = t + 0.25;
+  gl_Position = position;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:6: a while loop")) << message;
+}
+
+TEST(DerivedRefusal, AForLoopAndIfElseAreRefusedWithTheirLines) {
+  EXPECT_TRUE(mentions(refusalOf(R"(#version 140
+out float t;
+void main() {
+  t = 0.0;
+  for (int k = 0; k < 3; ++k) t += 1.0;
+}
+)"),
+                       "user.vert:5: a for loop"));
+  EXPECT_TRUE(mentions(refusalOf(R"(#version 140
+in vec4 position;
+out float t;
+void main() {
+  if (position.x > 0.0) t = 1.0; else t = 2.0;
+}
+)"),
+                       "user.vert:5: if/else"));
+}
+
+TEST(DerivedRefusal, ATextureLookupInTheVertexStageIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 140
+in vec4 position;
+uniform samplerCube environment;
+out vec4 colour;
+void main() {
+  vec3 direction = normalize(position.xyz);
+  colour = texture(environment, direction);
+  gl_Position = position;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:7: a texture lookup")) << message;
+  EXPECT_TRUE(mentions(message, "needed for 'colour'")) << message;
+}
+
+// A lookup that no requested value depends on is no obstacle: CS 381's
+// fragment captures its vectors before the cube map lookup.
+TEST(DerivedRefusal, ALookupAfterTheCapturedValuesIsNoObstacle) {
+  const derived::Program program =
+      derived::lowerShader({"refraction.frag", readListing("cs381/refraction/refraction.frag"),
+                            derived::Stage::Fragment},
+                           {"viewdir", "refractview"});
+  ASSERT_EQ(program.outputs.size(), 2u);
+  EXPECT_EQ(program.inputs.size(), 2u);   // myvert, mynorm
+  EXPECT_TRUE(program.uniforms.empty());  // the sampler is not read
+}
+
+TEST(DerivedRefusal, LegacyBuiltInsAreRefusedWithTheirLine) {
+  const std::string message = refusalOf(readListing("blog/fresnel/fresnel.vert"));
+  EXPECT_TRUE(mentions(message, "user.vert:10: the built-in gl_ModelViewMatrix")) << message;
+}
+
+TEST(DerivedRefusal, AnOutputTheShaderDoesNotComputeIsNamed) {
+  const std::string message = refusalOf(readListing("orange-book/14.1-fresnel/fresnel.vert"),
+                                        derived::Stage::Vertex, {"Refracted"});
+  EXPECT_TRUE(mentions(message, "'Refracted'")) << message;
+}
+
+TEST(DerivedRefusal, ASyntaxErrorIsReportedWithGlslangsMessage) {
+  const std::string message = refusalOf("#version 140\nvoid main() { float x = ; }\n");
+  EXPECT_TRUE(mentions(message, "user.vert: glslang cannot compile")) << message;
+}
+
+// Swizzles and constructors cost no operation: they only pick registers.
+TEST(DerivedLowering, SwizzlesAndConstructorsEmitNoOperations) {
+  const derived::Program program = derived::lowerShader({"user.vert", R"(#version 140
+in vec4 position;
+out vec3 v;
+void main() {
+  vec4 p = vec4(position.zyx, position.w);
+  v = p.xyz;
+}
+)"});
+  for (const derived::Op& op : program.ops)
+    EXPECT_EQ(op.code, derived::OpCode::Input) << derived::opCodeName(op.code);
+  ASSERT_EQ(program.outputs.size(), 1u);
+  EXPECT_EQ(program.outputs[0].components.size(), 3u);
+}
+
+}  // namespace
+}  // namespace snell::test
