@@ -283,6 +283,11 @@ class Evaluation {
           return B::min(B::max(arg(op, 0, s), arg(op, 1, s)), arg(op, 2, s));
         });
         break;
+      case OpCode::Select:
+        each(op, [&](std::size_t s) {
+          return select(truth(op.args[0], s), arg(op, 1, s), arg(op, 2, s));
+        });
+        break;
       case OpCode::SumOfProducts:
       case OpCode::Dot:
       case OpCode::Length:
@@ -305,6 +310,13 @@ class Evaluation {
         }
         break;
     }
+  }
+
+  static T select(Truth condition, const T& then, const T& otherwise) {
+    if constexpr (std::same_as<T, Interval>) {
+      if (condition == Truth::Unknown) return hull(then, otherwise);
+    }
+    return condition == Truth::True ? then : otherwise;
   }
 
   // float(b): 1.0 or 0.0; where the comparison may go either way, either.

@@ -44,6 +44,9 @@ enum class OpCode : std::uint8_t {
   Min,
   Abs,
   Clamp,
+  // cond, then, otherwise: GLSL's if/else and ?: on a value both ways
+  // compute; where the condition may go either way, the hull of both.
+  Select,
 };
 
 const char* opCodeName(OpCode code);

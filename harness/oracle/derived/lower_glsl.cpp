@@ -113,7 +113,10 @@ class Lowering {
                     : loop.testFirst() ? "a while loop"
                                        : "a do-while loop");
     }
-    if (node->getAsSelectionNode()) refuse(*node, "if/else");
+    if (glslang::TIntermSelection* selection = node->getAsSelectionNode()) {
+      ifElse(*selection);
+      return;
+    }
     if (node->getAsSwitchNode()) refuse(*node, "a switch");
     if (const glslang::TIntermBranch* branch = node->getAsBranchNode()) {
       switch (branch->getFlowOp()) {
@@ -132,6 +135,43 @@ class Lowering {
       return;
     }
     refuse(*node, "this statement");
+  }
+
+  // Both ways are lowered from the same state; each variable either way
+  // changed becomes a choice between its two values (ProgramBuilder::select).
+  void ifElse(glslang::TIntermSelection& node) {
+    const Value condition = this->condition(*node.getCondition());
+    const std::map<Key, Value> before = variables_;
+    statement(node.getTrueBlock());
+    std::map<Key, Value> afterThen = std::move(variables_);
+    variables_ = before;
+    statement(node.getFalseBlock());
+    std::map<Key, Value> afterElse = std::move(variables_);
+    variables_ = before;
+    const auto same = [](const Value& a, const Value& b) {
+      return a.regs == b.regs && a.refusal == b.refusal;
+    };
+    for (const auto& [key, then] : afterThen) {
+      auto otherwise = afterElse.find(key);
+      // Declared inside one way only (a block's local), or written one way
+      // only where it was unset before: not a value after the if.
+      if (otherwise == afterElse.end()) continue;
+      variables_[key] = same(then, otherwise->second)
+                            ? then
+                            : builder_.select(condition, then, otherwise->second,
+                                              node.getLoc().line, refuser(node));
+    }
+  }
+
+  Value condition(TIntermTyped& node) {
+    const Value value = expression(node);
+    if (value.refusal.empty() && (value.shape.kind != Kind::Bool || value.regs.size() != 1))
+      refuse(node, "a condition that is not one bool");
+    return value;
+  }
+
+  Refuse refuser(const TIntermNode& node) const {
+    return [this, &node](const std::string& what) { refuse(node, what); };
   }
 
   // Lowers a function's body; returns the value of its final `return`.
@@ -167,7 +207,14 @@ class Lowering {
     if (TIntermUnary* unary = node.getAsUnaryNode()) return unaryExpression(*unary, line);
     if (TIntermAggregate* aggregate = node.getAsAggregate())
       return aggregateExpression(*aggregate, line);
-    if (node.getAsSelectionNode()) refuse(node, "the ?: operator");
+    if (glslang::TIntermSelection* selection = node.getAsSelectionNode()) {
+      TIntermTyped* then = selection->getTrueBlock()->getAsTyped();
+      TIntermTyped* otherwise = selection->getFalseBlock()->getAsTyped();
+      if (!then || !otherwise) refuse(node, "this ?: expression");
+      const Value chosen = condition(*selection->getCondition());
+      return builder_.select(chosen, expression(*then), expression(*otherwise), line,
+                             refuser(node));
+    }
     refuse(node, "this expression");
   }
 

@@ -32,6 +32,13 @@ std::string refusalOf(const std::vector<Value>& args) {
   return {};
 }
 
+// Once per name: a variable read on both ways of an if is read twice.
+void addBinding(std::vector<Binding>& bindings, Binding binding) {
+  for (const Binding& known : bindings)
+    if (known.name == binding.name) return;
+  bindings.push_back(std::move(binding));
+}
+
 [[noreturn]] void refused(const Refuse& refuse, const std::string& what) {
   refuse(what);
   throw std::logic_error("Refuse returned: " + what);
@@ -72,12 +79,12 @@ Reg ProgramBuilder::literal(double value, bool isBool) {
 }
 
 std::vector<Reg> ProgramBuilder::uniform(const std::string& name, int components, int line) {
-  program_.uniforms.push_back(Binding{name, components, line});
+  addBinding(program_.uniforms, Binding{name, components, line});
   return reads(OpCode::Uniform, name, components, line);
 }
 
 std::vector<Reg> ProgramBuilder::input(const std::string& name, int components, int line) {
-  program_.inputs.push_back(Binding{name, components, line});
+  addBinding(program_.inputs, Binding{name, components, line});
   return reads(OpCode::Input, name, components, line);
 }
 
@@ -296,6 +303,27 @@ Value ProgramBuilder::builtin(glslang::TOperator op, const std::vector<Value>& a
     default:
       return Value{result, {}, unsupported("this built-in function", line)};
   }
+}
+
+Value ProgramBuilder::select(const Value& condition, const Value& then, const Value& otherwise,
+                             int line, const Refuse& refuse) {
+  if (std::string refusal = refusalOf({condition, then, otherwise}); !refusal.empty())
+    return Value{then.shape, {}, refusal};
+  if (then.shape.kind != Kind::Float || otherwise.shape.kind != Kind::Float)
+    refused(refuse, "a bool value chosen by a condition");
+  Value value{then.shape, {}, {}};
+  for (std::size_t k = 0; k < then.regs.size(); ++k) {
+    const Reg a = then.regs[k];
+    const Reg b = otherwise.regs[k];
+    if (a == b || a == kUnassigned || b == kUnassigned) {
+      // The same value both ways; or written on one way only, where the
+      // other leaves it undefined: unassigned.
+      value.regs.push_back(a == b ? a : kUnassigned);
+      continue;
+    }
+    value.regs.push_back(emit1(OpCode::Select, {condition.regs[0], a, b}, line));
+  }
+  return value;
 }
 
 std::string ProgramBuilder::unsupported(const std::string& what, int line) const {

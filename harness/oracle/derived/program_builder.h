@@ -59,6 +59,10 @@ class ProgramBuilder {
   Value builtin(glslang::TOperator op, const std::vector<Value>& args, Shape result, int line,
                 const Refuse& refuse);
 
+  // `condition ? then : otherwise`, component by component.
+  Value select(const Value& condition, const Value& then, const Value& otherwise, int line,
+               const Refuse& refuse);
+
   // The program that computes `outputs`, without the operations none of
   // them needs.
   Program finish(std::vector<Variable> outputs);

@@ -38,6 +38,11 @@ struct DerivedListing {
   // A fragment listing's inputs are its vertex stage's outputs: that stage,
   // derived too, gives them (the strict fp32 values, as a driver would).
   const char* vertexStage = nullptr;
+  const char* variant = nullptr;  // a second binding of the same listing
+
+  std::string label() const {
+    return variant ? std::string(oracle) + "_" + variant : std::string(oracle);
+  }
 };
 
 inline const std::vector<DerivedListing>& derivedListings() {
@@ -53,6 +58,9 @@ inline const std::vector<DerivedListing>& derivedListings() {
   // 1.0003 / 1.5, as the manifests bind it.
   static const std::map<std::string, Value> kCgEta = {
       {"etaRatio", Value{ValueType::Float, {static_cast<float>(0.6668666666666666)}}}};
+  // 1.5 / 1.0003 (c7e3v-refraction-glass-to-air).
+  static const std::map<std::string, Value> kCgGlassToAirEta = {
+      {"etaRatio", Value{ValueType::Float, {static_cast<float>(1.4995501349595122)}}}};
   static const std::map<std::string, std::string> kCs381Vertex = {
       {"modelViewMatrix", "modelview"},
       {"modelViewProjectionMatrix", "modelview_projection"},
@@ -86,6 +94,18 @@ inline const std::vector<DerivedListing>& derivedListings() {
        kCgEta,
        {{"position", "position"}, {"normal", "normal"}},
        {}},
+      // The same listing leaving glass for air: total internal reflection
+      // past the critical angle, and samples where `cosT2 > 0.0` may go
+      // either way.
+      {"cg_refraction",
+       "cg-tutorial/c7e3v-refraction/c7e3v_refraction.vert",
+       derived::Stage::Vertex,
+       kCgUniforms,
+       kCgGlassToAirEta,
+       {{"position", "position"}, {"normal", "normal"}},
+       {},
+       nullptr,
+       "glass_to_air"},
       {"cs381_refraction",
        "cs381/refraction/refraction.frag",
        derived::Stage::Fragment,

@@ -38,7 +38,7 @@ void main() {
   EXPECT_TRUE(mentions(message, "user.vert:6: a while loop")) << message;
 }
 
-TEST(DerivedRefusal, AForLoopAndIfElseAreRefusedWithTheirLines) {
+TEST(DerivedRefusal, AForLoopAndAnEarlyReturnAreRefusedWithTheirLines) {
   EXPECT_TRUE(mentions(refusalOf(R"(#version 140
 out float t;
 void main() {
@@ -50,11 +50,16 @@ void main() {
   EXPECT_TRUE(mentions(refusalOf(R"(#version 140
 in vec4 position;
 out float t;
+float f(float x) {
+  if (x > 0.0)
+    return 1.0;
+  return 2.0;
+}
 void main() {
-  if (position.x > 0.0) t = 1.0; else t = 2.0;
+  t = f(position.x);
 }
 )"),
-                       "user.vert:5: if/else"));
+                       "user.vert:6: a return before the end of a function"));
 }
 
 TEST(DerivedRefusal, ATextureLookupInTheVertexStageIsRefusedWithItsLine) {
