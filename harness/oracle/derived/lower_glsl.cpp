@@ -303,6 +303,9 @@ class Lowering {
   }
 
   Value checkedRead(const Value& value, const TIntermTyped& node) const {
+    // A component written from a value the oracle cannot follow taints the
+    // whole variable: the refusal goes on, not a missing component.
+    if (!value.refusal.empty()) return value;
     if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
       refuse(node, "reading a component before it is assigned");
     return value;

@@ -114,6 +114,22 @@ inline const std::vector<DerivedListing>& derivedListings() {
        {{"vertex", "position"}, {"normal", "normal"}},
        {{"index", 1.1}},
        "cs381/refraction/eyespace.vert"},
+      {"cs381_chromatic_aberration",
+       "cs381/chromatic-aberration/chromatic.frag",
+       derived::Stage::Fragment,
+       kCs381Vertex,
+       {},
+       {{"vertex", "position"}, {"normal", "normal"}},
+       {{"index_r", 1.097}, {"index_g", 1.1}, {"index_b", 1.103}},
+       "cs381/chromatic-aberration/eyespace.vert"},
+      {"cs381_glass",
+       "cs381/glass/glass.frag",
+       derived::Stage::Fragment,
+       kCs381Vertex,
+       {},
+       {{"vertex", "position"}, {"normal", "normal"}},
+       {{"index_r", 1.097}, {"index_g", 1.1}, {"index_b", 1.103}},
+       "cs381/glass/eyespace.vert"},
   };
   return listings;
 }
