@@ -100,18 +100,13 @@ class Lowering {
     if (!node) return;
     if (TIntermAggregate* aggregate = node->getAsAggregate()) {
       if (aggregate->getOp() == glslang::EOpSequence) {
-        // A for loop's initializer comes first in its sequence: name the loop.
-        for (TIntermNode* child : aggregate->getSequence())
-          if (child && child->getAsLoopNode()) statement(child);
         for (TIntermNode* child : aggregate->getSequence()) statement(child);
         return;
       }
     }
-    if (node->getAsLoopNode()) {
-      const glslang::TIntermLoop& loop = *node->getAsLoopNode();
-      refuse(*node, loop.getTerminal() ? "a for loop"
-                    : loop.testFirst() ? "a while loop"
-                                       : "a do-while loop");
+    if (glslang::TIntermLoop* loop = node->getAsLoopNode()) {
+      unrolled(*loop);
+      return;
     }
     if (glslang::TIntermSelection* selection = node->getAsSelectionNode()) {
       ifElse(*selection);
@@ -131,10 +126,124 @@ class Lowering {
     // A declaration without initializer is a bare symbol: nothing to do.
     if (node->getAsSymbolNode()) return;
     if (TIntermTyped* typed = node->getAsTyped()) {
-      expression(*typed);
+      if (isInt(*typed)) {
+        intStatement(*typed);
+      } else {
+        expression(*typed);
+      }
       return;
     }
     refuse(*node, "this statement");
+  }
+
+  // --- loops and the ints that count them ------------------------------
+  // A for loop whose counter is known when the shader is compiled (GLSL ES
+  // 1.00 appendix A's form, which every catalog loop has) is unrolled:
+  // its ints are compile-time values, never oracle values.
+
+  static bool isInt(const TIntermTyped& node) {
+    const glslang::TBasicType type = node.getBasicType();
+    return (type == glslang::EbtInt || type == glslang::EbtUint) && node.getType().isScalar();
+  }
+
+  static constexpr int kMaxIterations = 1024;
+
+  void unrolled(glslang::TIntermLoop& loop) {
+    if (!loop.getTerminal() || !loop.testFirst() || !loop.getTest())
+      refuse(loop, loop.testFirst() ? "a while loop" : "a do-while loop");
+    for (int iteration = 0;; ++iteration) {
+      if (!compileTimeBool(*loop.getTest())) return;
+      if (iteration == kMaxIterations)
+        refuse(loop, fmt::format("a loop of more than {} iterations", kMaxIterations));
+      statement(loop.getBody());
+      intStatement(*loop.getTerminal());
+    }
+  }
+
+  // An int assignment, ++ or --: updates the compile-time value.
+  void intStatement(TIntermTyped& node) {
+    using namespace glslang;
+    if (TIntermUnary* unary = node.getAsUnaryNode()) {
+      const TOperator op = unary->getOp();
+      const int step = op == EOpPostIncrement || op == EOpPreIncrement   ? 1
+                       : op == EOpPostDecrement || op == EOpPreDecrement ? -1
+                                                                         : 0;
+      if (step != 0) {
+        ints_[intVariable(*unary->getOperand())] += step;
+        return;
+      }
+    }
+    if (TIntermBinary* binary = node.getAsBinaryNode()) {
+      const TOperator op = binary->getOp();
+      if (op == EOpAssign || op == EOpAddAssign || op == EOpSubAssign) {
+        const long long value = compileTimeInt(*binary->getRight());
+        long long& variable = ints_[intVariable(*binary->getLeft())];
+        variable = op == EOpAssign      ? value
+                   : op == EOpAddAssign ? variable + value
+                                        : variable - value;
+        return;
+      }
+    }
+    refuse(node, "this int statement");
+  }
+
+  Key intVariable(TIntermTyped& node) const {
+    TIntermSymbol* symbol = node.getAsSymbolNode();
+    if (!symbol) refuse(node, "an int l-value that is not a variable");
+    return symbolKey(*symbol);
+  }
+
+  long long compileTimeInt(TIntermTyped& node) const {
+    using namespace glslang;
+    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
+      return constant->getConstArray()[0].getIConst();
+    if (TIntermSymbol* symbol = node.getAsSymbolNode()) {
+      auto found = ints_.find(symbolKey(*symbol));
+      if (found == ints_.end())
+        refuse(node, fmt::format("the int {}, whose value is not known when the shader is compiled",
+                                 symbol->getName().c_str()));
+      return found->second;
+    }
+    if (TIntermBinary* binary = node.getAsBinaryNode()) {
+      const long long a = compileTimeInt(*binary->getLeft());
+      const long long b = compileTimeInt(*binary->getRight());
+      switch (binary->getOp()) {
+        case EOpAdd:
+          return a + b;
+        case EOpSub:
+          return a - b;
+        case EOpMul:
+          return a * b;
+        default:
+          break;
+      }
+    }
+    refuse(node, "this int expression");
+  }
+
+  bool compileTimeBool(TIntermTyped& node) const {
+    using namespace glslang;
+    TIntermBinary* binary = node.getAsBinaryNode();
+    if (!binary || !isInt(*binary->getLeft()) || !isInt(*binary->getRight()))
+      refuse(node, "a loop condition that is not a comparison of ints");
+    const long long a = compileTimeInt(*binary->getLeft());
+    const long long b = compileTimeInt(*binary->getRight());
+    switch (binary->getOp()) {
+      case EOpLessThan:
+        return a < b;
+      case EOpLessThanEqual:
+        return a <= b;
+      case EOpGreaterThan:
+        return a > b;
+      case EOpGreaterThanEqual:
+        return a >= b;
+      case EOpEqual:
+        return a == b;
+      case EOpNotEqual:
+        return a != b;
+      default:
+        refuse(node, "this loop condition");
+    }
   }
 
   // Both ways are lowered from the same state; each variable either way
@@ -142,12 +251,14 @@ class Lowering {
   void ifElse(glslang::TIntermSelection& node) {
     const Value condition = this->condition(*node.getCondition());
     const std::map<Key, Value> before = variables_;
+    const std::map<Key, long long> intsBefore = ints_;
     statement(node.getTrueBlock());
     std::map<Key, Value> afterThen = std::move(variables_);
     variables_ = before;
     statement(node.getFalseBlock());
     std::map<Key, Value> afterElse = std::move(variables_);
     variables_ = before;
+    if (ints_ != intsBefore) refuse(node, "an int assigned under a condition");
     const auto same = [](const Value& a, const Value& b) {
       return a.regs == b.regs && a.refusal == b.refusal;
     };
@@ -468,6 +579,11 @@ class Lowering {
   }
 
   Value unaryExpression(TIntermUnary& node, int line) {
+    if (node.getOp() == glslang::EOpConvIntToFloat || node.getOp() == glslang::EOpConvUintToFloat)
+      return Value{
+          shapeOf(node),
+          {builder_.literal(static_cast<double>(compileTimeInt(*node.getOperand())), false)},
+          {}};
     const Value operand = expression(*node.getOperand());
     return builder_.unary(node.getOp(), operand, shapeOf(node), line,
                           [&](const std::string& what) { refuse(node, what); });
@@ -557,6 +673,7 @@ class Lowering {
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;
+  std::map<Key, long long> ints_;  // the compile-time ints (loop counters, their bounds)
   std::map<std::string, Key> names_;
   std::vector<std::string> writtenOutputs_;
   std::vector<TIntermAggregate*> callStack_;

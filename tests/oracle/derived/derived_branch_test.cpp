@@ -1,4 +1,4 @@
-// if/else and ?: in the derived oracle: each way is lowered, and where the
+// if/else, ?: and loops in the derived oracle: each way is lowered, and where the
 // condition may go either way the result holds both.
 #include <gtest/gtest.h>
 
@@ -40,6 +40,22 @@ void main() {
   EXPECT_TRUE(contains(allowed[1][1], 6.0f));
 }
 
+// A for loop with a constant bound is unrolled; float(m) is its counter.
+TEST(DerivedLoop, AForLoopWithAConstantBoundRunsItsIterations) {
+  const derived::Program program = derived::lowerShader({"user.vert", R"(#version 140
+in float x;
+out float t;
+const int orders = 3;
+void main() {
+  t = 0.0;
+  for (int m = 1; m <= orders; ++m)
+    t += x / float(m);
+}
+)"});
+  const auto exact = derived::evaluateProgram<double>(program, {}, oneInput("x", {6.0f}), 1);
+  EXPECT_EQ(exact[0][0], 6.0 + 3.0 + 2.0);
+}
+
 // GLSL's refract() written out with if/else in a user's shader, on the
 // glass-to-air binding of the Cg listing, where k < 0 may go either way
 // near the critical angle: its interval holds the exact value of the
@@ -63,7 +79,7 @@ TEST(DerivedBranch, AnIfElseRefractHoldsTheBuiltInsExactValue) {
 }
 
 )");
-  const DerivedListing& glassToAir = derivedListings()[4];
+  const DerivedListing& glassToAir = derivedListings()[5];
   ASSERT_EQ(glassToAir.label(), "cg_refraction_glass_to_air");
   const BoundListing bound = bindListing(glassToAir, makeScene("sphere"));
   const auto varyingsOf = [&](const std::string& text) {

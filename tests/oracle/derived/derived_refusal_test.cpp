@@ -38,15 +38,16 @@ void main() {
   EXPECT_TRUE(mentions(message, "user.vert:6: a while loop")) << message;
 }
 
-TEST(DerivedRefusal, AForLoopAndAnEarlyReturnAreRefusedWithTheirLines) {
-  EXPECT_TRUE(mentions(refusalOf(R"(#version 140
+TEST(DerivedRefusal, ALoopWithoutAConstantBoundAndAnEarlyReturnAreRefusedWithTheirLines) {
+  const std::string message = refusalOf(R"(#version 140
+uniform int n;
 out float t;
 void main() {
   t = 0.0;
-  for (int k = 0; k < 3; ++k) t += 1.0;
+  for (int k = 0; k < n; ++k) t += 1.0;
 }
-)"),
-                       "user.vert:5: a for loop"));
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:6: the int n, whose value is not known")) << message;
   EXPECT_TRUE(mentions(refusalOf(R"(#version 140
 in vec4 position;
 out float t;
