@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <span>
 
 #include "core/errors.h"
+#include "core/legacy_builtins.h"
 #include "oracle/glsl/glsl.h"
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"
@@ -381,9 +383,15 @@ template std::vector<std::vector<Interval>> evaluateProgram<Interval>(const Prog
                                                                       const AttributeMap&,
                                                                       std::size_t);
 
-std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& uniforms,
+std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& bound,
                                             const AttributeMap& inputs, std::size_t sampleCount,
                                             PrecisionRules rules) {
+  // A legacy listing reads GL's derived state (gl_NormalMatrix, ...), which
+  // the state table computes from the bound matrices, as GL does.
+  const bool legacy = std::any_of(program.uniforms.begin(), program.uniforms.end(),
+                                  [](const Binding& b) { return b.name.rfind("gl_", 0) == 0; });
+  const UniformMap state = legacy ? withDerivedLegacyState(bound) : UniformMap{};
+  const UniformMap& uniforms = legacy ? state : bound;
   checkBindings(program, uniforms, inputs, sampleCount);
   const UsePrecisionRules active(rules);
   const auto references = evaluateProgram<double>(program, uniforms, inputs, sampleCount);

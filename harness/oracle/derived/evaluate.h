@@ -33,7 +33,9 @@ std::vector<std::vector<T>> evaluateProgram(const Program& program, const Unifor
                                             const AttributeMap& inputs, std::size_t sampleCount);
 
 // The three number types together, as a listing oracle reports them, under
-// `rules`. Checks the bindings first.
+// `rules`. Checks the bindings first. A program that reads legacy
+// fixed-function state gets GL's derived state (gl_NormalMatrix,
+// gl_ModelViewProjectionMatrix) from core/legacy_builtins.h.
 std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& uniforms,
                                             const AttributeMap& inputs, std::size_t sampleCount,
                                             PrecisionRules rules);

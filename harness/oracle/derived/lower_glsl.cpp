@@ -9,10 +9,12 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 
 #include "core/errors.h"
+#include "core/legacy_builtins.h"
 #include "oracle/derived/program_builder.h"
 
 namespace snell::derived {
@@ -387,10 +389,8 @@ class Lowering {
     if (found != variables_.end()) return checkedRead(found->second, symbol);
     const int line = symbol.getLoc().line;
     if (name.rfind("gl_", 0) == 0) {
-      // Legacy state (gl_ModelViewMatrix, gl_Vertex, arrays such as
-      // gl_TextureMatrix) and stage built-ins.
-      Value value;
-      value.refusal = builder_.unsupported("the built-in " + name, line);
+      const Value value =
+          builtinVariable(name, symbol.getType().isArray() ? Shape{} : shapeOf(symbol), line);
       variables_[key] = value;
       return value;
     }
@@ -410,6 +410,23 @@ class Lowering {
       refuse(symbol, fmt::format("reading {} before it is assigned", name));
     }
     variables_[key] = value;
+    return value;
+  }
+
+  // Legacy fixed-function state (gl_ModelViewMatrix, gl_TextureMatrix[1],
+  // gl_Vertex), by the names of the state table (core/legacy_builtins.h)
+  // that manifests bind; any other built-in (gl_FragCoord, ...) is refused
+  // where a requested value needs it.
+  Value builtinVariable(const std::string& name, Shape shape, int line) {
+    Value value{shape, {}, {}};
+    const std::optional<LegacyBuiltin> legacy = findLegacyBuiltin(name);
+    if (!legacy) {
+      value.refusal = builder_.unsupported("the built-in " + name, line);
+    } else if (legacy->kind == LegacyBuiltinKind::Attribute) {
+      value.regs = builder_.input(name, shape.size(), line);
+    } else {
+      value.regs = builder_.uniform(name, shape.size(), line);
+    }
     return value;
   }
 
@@ -446,6 +463,14 @@ class Lowering {
         return base.pick(picks, shapeOf(node));
       }
       case EOpIndexDirect: {
+        TIntermSymbol* array = node.getLeft()->getAsSymbolNode();
+        if (array && array->getType().isArray()) {
+          // gl_TextureMatrix[1]: one entry of the state table.
+          const std::string name =
+              fmt::format("{}[{}]", array->getName().c_str(), constantIndex(*node.getRight()));
+          if (name.rfind("gl_", 0) != 0) refuse(node, "an array");
+          return builtinVariable(name, shapeOf(node), line);
+        }
         const Value base = expression(*node.getLeft());
         const int index = constantIndex(*node.getRight());
         if (base.shape.columns > 1) return base.column(index);
@@ -612,6 +637,16 @@ class Lowering {
           source_.file, line);
       value.shape.kind = Kind::Float;
       return value;
+    }
+    if (node.getOp() == glslang::EOpFtransform) {
+      // gl_ModelViewProjectionMatrix * gl_Vertex, as the hand-written
+      // oracles take it (GLSL 1.20 section 8.5 asks only for the
+      // fixed-function transform's result, which is that product).
+      const Value matrix =
+          builtinVariable("gl_ModelViewProjectionMatrix", Shape{Kind::Float, 4, 4}, line);
+      const Value vertex = builtinVariable("gl_Vertex", Shape{Kind::Float, 4, 1}, line);
+      return builder_.binary(glslang::EOpMatrixTimesVector, matrix, vertex, shapeOf(node), line,
+                             refuseHere);
     }
     if (node.isConstructor()) return builder_.construct(shapeOf(node), args, line, refuseHere);
     return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere);

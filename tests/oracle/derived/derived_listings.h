@@ -65,6 +65,16 @@ inline const std::vector<DerivedListing>& derivedListings() {
       {"modelViewMatrix", "modelview"},
       {"modelViewProjectionMatrix", "modelview_projection"},
       {"normalMatrix", "normal_matrix"}};
+  // The blog listings read GL's fixed-function state; the manifests bind
+  // gl_TextureMatrix[1] to a quarter turn about z with a translation.
+  static const std::map<std::string, std::string> kLegacy = {
+      {"gl_ModelViewMatrix", "modelview"},
+      {"gl_ProjectionMatrix", "projection"},
+      {"gl_TextureMatrix[0]", "texture_matrix"}};
+  static const std::map<std::string, Value> kLegacyTextureMatrix1 = {
+      {"gl_TextureMatrix[1]", Value{ValueType::Mat4,
+                                    {0.0f, 1.0f, 0.0f, 0.0f, -1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f,
+                                     1.0f, 0.0f, 0.25f, -0.125f, 0.5f, 1.0f}}}};
   static const std::vector<DerivedListing> listings = {
       {"orange_book_fresnel",
        "orange-book/14.1-fresnel/fresnel.vert",
@@ -116,6 +126,28 @@ inline const std::vector<DerivedListing>& derivedListings() {
        {},
        nullptr,
        "glass_to_air"},
+      {"blog_fresnel",
+       "blog/fresnel/fresnel.vert",
+       derived::Stage::Vertex,
+       kLegacy,
+       kLegacyTextureMatrix1,
+       {{"gl_Vertex", "position"}, {"gl_Normal", "normal"}},
+       {{"Eta", 0.6}, {"FresnelPower", 5.0}}},
+      {"blog_chromatic",
+       "blog/chromatic/chromatic.vert",
+       derived::Stage::Vertex,
+       kLegacy,
+       kLegacyTextureMatrix1,
+       {{"gl_Vertex", "position"}, {"gl_Normal", "normal"}},
+       {{"Eta", 0.6}, {"EtaR", 0.3}, {"EtaG", 0.67}, {"EtaB", 0.9}, {"FresnelPower", 5.0}}},
+      {"blog_diffraction",
+       "blog/diffraction/diffraction.vert",
+       derived::Stage::Vertex,
+       {{"gl_ModelViewMatrix", "modelview"}, {"gl_ProjectionMatrix", "projection"}},
+       {{"eyeposition", Value{ValueType::Vec3, {0.0f, 0.0f, 0.0f}}},
+        {"lightposition", Value{ValueType::Vec3, {3.0f, -3.0f, 0.0f}}}},
+       {{"gl_Vertex", "position"}, {"gl_Normal", "normal"}, {"Tangent", "tangent"}},
+       {{"ultraviolet", 400.0}, {"infrared", 700.0}, {"c", 10.0}, {"diffAtten", 0.8}}},
       {"cs381_refraction",
        "cs381/refraction/refraction.frag",
        derived::Stage::Fragment,

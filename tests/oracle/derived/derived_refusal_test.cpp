@@ -90,9 +90,16 @@ TEST(DerivedRefusal, ALookupAfterTheCapturedValuesIsNoObstacle) {
   EXPECT_TRUE(program.uniforms.empty());  // the sampler is not read
 }
 
-TEST(DerivedRefusal, LegacyBuiltInsAreRefusedWithTheirLine) {
-  const std::string message = refusalOf(readListing("blog/fresnel/fresnel.vert"));
-  EXPECT_TRUE(mentions(message, "user.vert:10: the built-in gl_ModelViewMatrix")) << message;
+// Legacy state comes from the state table; a built-in outside it does not.
+TEST(DerivedRefusal, ABuiltInOutsideTheStateTableIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 120
+void main() {
+  vec2 p = gl_FragCoord.xy;
+  gl_FragColor = vec4(p, 0.0, 1.0);
+}
+)",
+                                        derived::Stage::Fragment, {"p"});
+  EXPECT_TRUE(mentions(message, "user.vert:3: the built-in gl_FragCoord")) << message;
 }
 
 TEST(DerivedRefusal, AnOutputTheShaderDoesNotComputeIsNamed) {
