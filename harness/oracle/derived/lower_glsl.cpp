@@ -43,6 +43,10 @@ std::string withoutConstQualifiers(const std::string& text) {
   return std::regex_replace(text, kConst, "     ");
 }
 
+constexpr const char* kAdvice =
+    "give the listing a hand-written oracle (manifest `oracle`), or rewrite it without that "
+    "construct, or capture the values it needs before that line";
+
 // A variable's storage in the lowering environment: a symbol by its
 // glslang id, or one member of an interface block (gl_Position in
 // gl_PerVertex) by block id and member.
@@ -54,7 +58,8 @@ Key memberKey(const TIntermSymbol& block, int member) {
 
 class Lowering {
  public:
-  Lowering(const ShaderSource& source, TIntermNode* root) : source_(source), builder_(source.file) {
+  Lowering(const ShaderSource& source, TIntermNode* root)
+      : source_(source), builder_(source.file, source.text) {
     collectFunctions(root);
   }
 
@@ -75,10 +80,7 @@ class Lowering {
 
  private:
   [[noreturn]] void refuse(const TIntermNode& node, const std::string& what) const {
-    throw UsageError(fmt::format(
-        "{}:{}: {} is outside the derived oracle's subset; give the listing a hand-written "
-        "oracle (manifest `oracle`) or rewrite it without that construct",
-        source_.file, node.getLoc().line, what));
+    throw UsageError(builder_.unsupported(what, node.getLoc().line) + "; " + kAdvice);
   }
 
   void collectFunctions(TIntermNode* root) {
@@ -398,10 +400,8 @@ class Lowering {
     const glslang::TStorageQualifier storage = symbol.getQualifier().storage;
     Value value{shape, {}, {}};
     if (shape.kind == Kind::Opaque) {
-      value.refusal = fmt::format(
-          "{}:{}: the sampler {} is outside the derived oracle's subset (no texture "
-          "lookups yet)",
-          source_.file, line, name);
+      value.refusal =
+          builder_.unsupported(fmt::format("the sampler {} (no texture lookups yet)", name), line);
     } else if (storage == glslang::EvqUniform) {
       value.regs = builder_.uniform(name, shape.size(), line);
     } else if (storage == glslang::EvqVaryingIn) {
@@ -631,10 +631,9 @@ class Lowering {
     }
     if (lookup) {
       Value value{shapeOf(node), {}, {}};
-      value.refusal = fmt::format(
-          "{}:{}: a texture lookup is outside the derived oracle's subset (the derived oracle "
-          "follows values up to a lookup, not through it)",
-          source_.file, line);
+      value.refusal = builder_.unsupported(
+          "a texture lookup (the derived oracle follows values up to a lookup, not through it)",
+          line);
       value.shape.kind = Kind::Float;
       return value;
     }
@@ -693,10 +692,7 @@ class Lowering {
           source_.file, name));
     const Value& value = variables_.at(key->second);
     if (!value.refusal.empty())
-      throw UsageError(
-          fmt::format("{} (needed for '{}'); give the listing a hand-written oracle "
-                      "(manifest `oracle`) or capture a value before it",
-                      value.refusal, name));
+      throw UsageError(fmt::format("{} (needed for '{}'); {}", value.refusal, name, kAdvice));
     if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
       throw UsageError(
           fmt::format("{}: '{}' is not completely assigned by main()", source_.file, name));
@@ -727,10 +723,12 @@ Program lowerShader(const ShaderSource& source, const std::vector<std::string>& 
   const int length = static_cast<int>(text.size());
   const char* name = source.file.c_str();
   shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
-  if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault))
-    throw UsageError(
-        fmt::format("{}: glslang cannot compile the shader for the derived oracle:\n{}",
-                    source.file, shader.getInfoLog()));
+  if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) {
+    std::string log = shader.getInfoLog();
+    log.erase(log.find_last_not_of(" \t\r\n") + 1);
+    throw UsageError(fmt::format(
+        "{}: glslang cannot compile the shader for the derived oracle:\n{}", source.file, log));
+  }
   Lowering lowering(source, shader.getIntermediate()->getTreeRoot());
   return lowering.run(outputs);
 }

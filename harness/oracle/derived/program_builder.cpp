@@ -327,7 +327,24 @@ Value ProgramBuilder::select(const Value& condition, const Value& then, const Va
 }
 
 std::string ProgramBuilder::unsupported(const std::string& what, int line) const {
-  return fmt::format("{}:{}: {} is outside the derived oracle's subset", program_.file, line, what);
+  std::size_t begin = 0;
+  for (int k = 1; k < line && begin != std::string::npos; ++k) {
+    begin = text_.find('\n', begin);
+    if (begin != std::string::npos) ++begin;
+  }
+  std::string quoted;
+  if (line > 0 && begin != std::string::npos) {
+    const std::size_t end = text_.find('\n', begin);
+    quoted = text_.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    const std::size_t first = quoted.find_first_not_of(" \t\r");
+    const std::size_t last = quoted.find_last_not_of(" \t\r");
+    quoted = first == std::string::npos ? "" : quoted.substr(first, last - first + 1);
+  }
+  if (quoted.empty())
+    return fmt::format("{}:{}: {} is outside the derived oracle's subset", program_.file, line,
+                       what);
+  return fmt::format("{}:{}: {} is outside the derived oracle's subset: `{}`", program_.file, line,
+                     what, quoted);
 }
 
 Program ProgramBuilder::finish(std::vector<Variable> outputs) {

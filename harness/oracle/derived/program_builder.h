@@ -45,7 +45,10 @@ using Refuse = std::function<void(const std::string& what)>;
 
 class ProgramBuilder {
  public:
-  explicit ProgramBuilder(std::string file) { program_.file = std::move(file); }
+  // `text`: the source as written, quoted in messages.
+  ProgramBuilder(std::string file, std::string text) : text_(std::move(text)) {
+    program_.file = std::move(file);
+  }
 
   Reg literal(double value, bool isBool);
   std::vector<Reg> uniform(const std::string& name, int components, int line);
@@ -67,7 +70,7 @@ class ProgramBuilder {
   // them needs.
   Program finish(std::vector<Variable> outputs);
 
-  // The refusal of a value the oracle cannot follow, for a Value.
+  // "FILE:LINE: <what> is outside the derived oracle's subset: `<the line>`".
   std::string unsupported(const std::string& what, int line) const;
 
  private:
@@ -83,6 +86,7 @@ class ProgramBuilder {
   Reg sumOfProducts(const std::vector<Reg>& a, const std::vector<Reg>& b, int line);
   std::vector<Reg> toFloat(const Value& value, int line);
 
+  std::string text_;
   Program program_;
   std::vector<std::uint8_t> perSample_;  // by register
   std::map<std::pair<std::uint64_t, bool>, Reg> literals_;

@@ -2,6 +2,8 @@
 // naming the construct and FILE:LINE.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include "core/errors.h"
@@ -36,6 +38,7 @@ void main() {
 }
 )");
   EXPECT_TRUE(mentions(message, "user.vert:6: a while loop")) << message;
+  EXPECT_TRUE(mentions(message, "`while (t < 1.0)`")) << message;  // the line as written
 }
 
 TEST(DerivedRefusal, ALoopWithoutAConstantBoundAndAnEarlyReturnAreRefusedWithTheirLines) {
@@ -127,6 +130,39 @@ void main() {
     EXPECT_EQ(op.code, derived::OpCode::Input) << derived::opCodeName(op.code);
   ASSERT_EQ(program.outputs.size(), 1u);
   EXPECT_EQ(program.outputs[0].components.size(), 3u);
+}
+
+}  // namespace
+}  // namespace snell::test
+
+namespace snell::test {
+namespace {
+
+// Every shader of the catalog, each stage with every output it writes,
+// either lowers or is refused with a located message: never a crash, never
+// another kind of error.
+TEST(DerivedRefusal, EveryCatalogShaderLowersOrIsRefusedWithItsFile) {
+  namespace fs = std::filesystem;
+  std::size_t lowered = 0, refused = 0;
+  for (const fs::directory_entry& entry :
+       fs::recursive_directory_iterator(fs::path(SNELL_SOURCE_ROOT) / "shaders")) {
+    const std::string extension = entry.path().extension().string();
+    if (extension != ".vert" && extension != ".frag") continue;
+    const std::string relative =
+        fs::relative(entry.path(), fs::path(SNELL_SOURCE_ROOT) / "shaders").string();
+    const derived::Stage stage =
+        extension == ".vert" ? derived::Stage::Vertex : derived::Stage::Fragment;
+    try {
+      derived::lowerShader({relative, readListing(relative), stage});
+      ++lowered;
+    } catch (const UsageError& e) {
+      ++refused;
+      std::printf("[ refused  ] %s\n", e.what());
+      EXPECT_TRUE(mentions(e.what(), relative + ":")) << e.what();
+    }
+  }
+  std::printf("[ catalog  ] %zu shader stages lowered whole, %zu refused\n", lowered, refused);
+  EXPECT_GE(lowered, 13u);  // every vertex stage of the cross-check, at least
 }
 
 }  // namespace
