@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/scene.h"
+#include "fresnel_inputs.h"
 #include "oracle/derived/derived_vertex_oracle.h"
 #include "oracle/vertex_oracle.h"
 
@@ -24,19 +24,8 @@ std::string fresnelSource() {
   return text.str();
 }
 
-struct Fresnel14_1 {
-  Scene scene = makeScene("sphere");
-  UniformMap uniforms{{"MVMatrix", scene.values.at("modelview")},
-                      {"MVPMatrix", scene.values.at("modelview_projection")},
-                      {"NormalMatrix", scene.values.at("normal_matrix")},
-                      {"TextureMatrix", scene.values.at("texture_matrix")}};
-  AttributeMap attributes;
-  ConstantMap constants{{"Eta", 0.66}, {"FresnelPower", 5.0}};
+struct Fresnel14_1 : FresnelInputs {
   derived::ShaderSource source{"fresnel.vert", fresnelSource(), derived::Stage::Vertex};
-  Fresnel14_1() {
-    attributes["MCvertex"] = scene.attributes.at("position");
-    attributes["MCnormal"] = scene.attributes.at("normal");
-  }
   OracleInput input(PrecisionRules rules) const {
     return {uniforms, constants, attributes, scene.vertexCount, rules};
   }
