@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <array>
 #include <concepts>
+#include <map>
 #include <span>
 
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
+#include "oracle/branch_paths.h"
+#include "oracle/derived/sample_ways.h"
 #include "oracle/glsl/glsl.h"
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"
@@ -181,7 +184,16 @@ class Evaluation {
         break;
       case OpCode::Refract:
         eachVector<N>(op, [&](std::size_t s) {
-          return glsl::refract(vector<N>(op, 0, s), vector<N>(op, N, s), arg(op, 2 * N, s));
+          const glsl::vec<T, N> I = vector<N>(op, 0, s);
+          const glsl::vec<T, N> normal = vector<N>(op, N, s);
+          const T& eta = arg(op, 2 * N, s);
+          if constexpr (std::same_as<T, Interval>) {
+            // refract()'s own `k < 0.0` (oracle/glsl/geometric.h), to know
+            // the samples where it may go either way.
+            const T k = glsl::refractK(eta, glsl::dot(normal, I));
+            if (undecided_ && (k < glsl::lit<T>(0.0)) == Truth::Unknown) markUndecided(op, s);
+          }
+          return glsl::refract(I, normal, eta);
         });
         break;
       case OpCode::SumOfProducts:
@@ -246,7 +258,9 @@ class Evaluation {
         eachTruth(op, [&](std::size_t s) { return negate(B::less(arg(op, 1, s), arg(op, 0, s))); });
         break;
       case OpCode::BoolToFloat:
-        each(op, [&](std::size_t s) { return boolToFloat(truth(op.args[0], s)); });
+        each(op, [&](std::size_t s) {
+          return select(op, s, op.args[0], glsl::lit<T>(1.0), glsl::lit<T>(0.0));
+        });
         break;
       case OpCode::Mix:
         each(op,
@@ -287,7 +301,7 @@ class Evaluation {
         break;
       case OpCode::Select:
         each(op, [&](std::size_t s) {
-          return select(truth(op.args[0], s), arg(op, 1, s), arg(op, 2, s));
+          return select(op, s, op.args[0], arg(op, 1, s), arg(op, 2, s));
         });
         break;
       case OpCode::SumOfProducts:
@@ -314,19 +328,53 @@ class Evaluation {
     }
   }
 
-  static T select(Truth condition, const T& then, const T& otherwise) {
+  // GLSL's `condition ? then : otherwise` (and float(bool), 1.0 or 0.0).
+  // Over the batch an undecided condition gives the hull of both. While a
+  // sample's ways are explored (oracle/branch_paths.h), each condition is
+  // one choice, made where it is first used (however many components it
+  // selects), and recorded; a double replay takes the recorded outcome at
+  // the same place.
+  T select(const Op& op, std::size_t sample, Reg condition, const T& then, const T& otherwise) {
     if constexpr (std::same_as<T, Interval>) {
-      if (condition == Truth::Unknown) return hull(then, otherwise);
+      const Truth t = chosen(condition, sample);
+      if (t == Truth::Unknown) {
+        if (undecided_) markUndecided(op, sample);
+        return hull(then, otherwise);
+      }
+      return t == Truth::True ? then : otherwise;
+    } else {
+      return chosen(condition, sample) == Truth::True ? then : otherwise;
     }
-    return condition == Truth::True ? then : otherwise;
   }
 
-  // float(b): 1.0 or 0.0; where the comparison may go either way, either.
-  static T boolToFloat(Truth t) {
-    if constexpr (std::same_as<T, Interval>) {
-      if (t == Truth::Unknown) return hull(glsl::lit<T>(1.0), glsl::lit<T>(0.0));
+  Truth chosen(Reg condition, std::size_t sample) {
+    Truth t = truth(condition, sample);
+    BranchPaths* paths = activeBranchPaths();
+    BranchReplay* replay = activeBranchReplay();
+    if (!paths && !replay) return t;
+    auto known = choices_.find(condition);
+    if (known != choices_.end()) return known->second;
+    if (replay) {
+      t = replay->next() ? Truth::True : Truth::False;
+    } else if (t == Truth::Unknown) {
+      const BranchPaths::Choice choice = paths->chooseUnknown();
+      if (choice != BranchPaths::Choice::Hull) {
+        t = choice == BranchPaths::Choice::Then ? Truth::True : Truth::False;
+        paths->record(t == Truth::True);
+      }
+    } else {
+      paths->record(t == Truth::True);
     }
-    return glsl::lit<T>(t == Truth::True ? 1.0 : 0.0);
+    choices_.emplace(condition, t);
+    return t;
+  }
+
+  void markUndecided(const Op& op, std::size_t sample) {
+    if (op.perSample) {
+      (*undecided_)[sample] = 1;
+    } else {
+      std::fill(undecided_->begin(), undecided_->end(), 1);
+    }
   }
 
   const Program& program_;
@@ -335,6 +383,12 @@ class Evaluation {
   std::size_t sampleCount_;
   std::vector<std::vector<T>> numbers_;
   std::vector<std::vector<Truth>> truths_;
+  std::map<Reg, Truth> choices_;  // while exploring or replaying one sample
+
+ public:
+  // Set by the caller: a flag per sample, raised where a branch may go
+  // either way.
+  std::vector<std::uint8_t>* undecided_ = nullptr;
 };
 
 }  // namespace
@@ -370,18 +424,25 @@ void checkBindings(const Program& program, const UniformMap& uniforms, const Att
 
 template <class T>
 std::vector<std::vector<T>> evaluateProgram(const Program& program, const UniformMap& uniforms,
-                                            const AttributeMap& inputs, std::size_t sampleCount) {
-  return Evaluation<T>(program, uniforms, inputs, sampleCount).run();
+                                            const AttributeMap& inputs, std::size_t sampleCount,
+                                            std::vector<std::uint8_t>* undecided) {
+  Evaluation<T> evaluation(program, uniforms, inputs, sampleCount);
+  if (undecided) undecided->assign(sampleCount, 0);
+  evaluation.undecided_ = undecided;
+  return evaluation.run();
 }
 
 template std::vector<std::vector<double>> evaluateProgram<double>(const Program&, const UniformMap&,
-                                                                  const AttributeMap&, std::size_t);
+                                                                  const AttributeMap&, std::size_t,
+                                                                  std::vector<std::uint8_t>*);
 template std::vector<std::vector<float>> evaluateProgram<float>(const Program&, const UniformMap&,
-                                                                const AttributeMap&, std::size_t);
+                                                                const AttributeMap&, std::size_t,
+                                                                std::vector<std::uint8_t>*);
 template std::vector<std::vector<Interval>> evaluateProgram<Interval>(const Program&,
                                                                       const UniformMap&,
                                                                       const AttributeMap&,
-                                                                      std::size_t);
+                                                                      std::size_t,
+                                                                      std::vector<std::uint8_t>*);
 
 std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& bound,
                                             const AttributeMap& inputs, std::size_t sampleCount,
@@ -396,7 +457,9 @@ std::vector<OracleVarying> evaluateVaryings(const Program& program, const Unifor
   const UsePrecisionRules active(rules);
   const auto references = evaluateProgram<double>(program, uniforms, inputs, sampleCount);
   const auto stricts = evaluateProgram<float>(program, uniforms, inputs, sampleCount);
-  const auto intervals = evaluateProgram<Interval>(program, uniforms, inputs, sampleCount);
+  std::vector<std::uint8_t> undecided;
+  const auto intervals =
+      evaluateProgram<Interval>(program, uniforms, inputs, sampleCount, &undecided);
   std::vector<OracleVarying> varyings;
   for (std::size_t k = 0; k < program.outputs.size(); ++k) {
     OracleVarying varying;
@@ -414,6 +477,8 @@ std::vector<OracleVarying> evaluateVaryings(const Program& program, const Unifor
     }
     varyings.push_back(std::move(varying));
   }
+  for (std::size_t sample = 0; sample < sampleCount; ++sample)
+    if (undecided[sample]) keepWaysApart(program, uniforms, inputs, sample, varyings);
   return varyings;
 }
 

@@ -7,10 +7,13 @@
 // oracle/glsl for double and float, interval.h and interval_builtins.h for
 // Interval, under the precision rules active on the thread.
 //
-// A condition the intervals cannot decide (inside refract(), or a
-// comparison turned into a number) takes the hull of both ways, as
-// glsl::branch does without a path explorer.
+// A condition the intervals cannot decide (inside refract(), an if/else,
+// a comparison turned into a number) takes the hull of both ways over the
+// batch; evaluateVaryings then runs each such sample again once per way
+// (sample_ways.h), so that the ways are kept apart as alternatives, as the
+// hand-written oracles keep them.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "core/expected_values.h"
@@ -28,9 +31,13 @@ void checkBindings(const Program& program, const UniformMap& uniforms, const Att
 // Each output's components for every sample, sample-major
 // (sampleCount * components values), in the number type T (double, float
 // or Interval). Expects checked bindings.
+// `undecided`, when given, gets a flag per sample: 1 where a branch (an
+// if/else, ?:, float(bool) or refract()'s k < 0) may go either way
+// (Interval only).
 template <class T>
 std::vector<std::vector<T>> evaluateProgram(const Program& program, const UniformMap& uniforms,
-                                            const AttributeMap& inputs, std::size_t sampleCount);
+                                            const AttributeMap& inputs, std::size_t sampleCount,
+                                            std::vector<std::uint8_t>* undecided = nullptr);
 
 // The three number types together, as a listing oracle reports them, under
 // `rules`. Checks the bindings first. A program that reads legacy

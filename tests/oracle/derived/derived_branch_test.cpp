@@ -2,6 +2,7 @@
 // condition may go either way the result holds both.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "derived_listings.h"
@@ -99,6 +100,64 @@ TEST(DerivedBranch, AnIfElseRefractHoldsTheBuiltInsExactValue) {
   EXPECT_GT(compared, reference.reference.size() / 2);
   EXPECT_GT(totalReflection, 0u);  // both ways are taken somewhere
   EXPECT_EQ(outside, 0u);
+}
+
+// Directions across the critical angle of eta = 1.5, dense enough that
+// refract()'s k < 0 (or the written-out if) cannot be decided at some:
+// there each way is kept apart, whole (one choice per condition, not one
+// per component), with its own exact value.
+TEST(DerivedBranch, NearTheCriticalAngleTheTwoWaysAreKeptApart) {
+  const std::string header = R"(#version 140
+in vec3 I;
+in vec3 N;
+uniform float eta;
+out vec3 R;
+)";
+  const std::string builtin = header + "void main() { R = refract(I, N, eta); }\n";
+  const std::string written = header + R"(void main() {
+  float d = dot(N, I);
+  float k = 1.0 - eta * eta * (1.0 - d * d);
+  if (k < 0.0)
+    R = vec3(0.0);
+  else
+    R = eta * I - (eta * d + sqrt(max(k, 0.0))) * N;
+}
+)";
+  const double critical = std::asin(1.0 / 1.5);
+  AttributeMap inputs;
+  inputs["I"] = AttributeStream{"I", 3, {}};
+  inputs["N"] = AttributeStream{"N", 3, {}};
+  const std::size_t count = 2001;
+  for (std::size_t k = 0; k < count; ++k) {
+    const double angle = critical + 2e-6 * (static_cast<double>(k) / (count - 1) - 0.5);
+    inputs["I"].data.insert(inputs["I"].data.end(), {static_cast<float>(std::sin(angle)),
+                                                     static_cast<float>(-std::cos(angle)), 0.0f});
+    inputs["N"].data.insert(inputs["N"].data.end(), {0.0f, 1.0f, 0.0f});
+  }
+  const UniformMap uniforms{{"eta", Value{ValueType::Float, {1.5f}}}};
+  for (const std::string& text : {builtin, written}) {
+    const OracleVarying R =
+        derived::evaluateVaryings(derived::lowerShader({"user.vert", text, derived::Stage::Vertex}),
+                                  uniforms, inputs, count, PrecisionRules::Glsl)[0];
+    ASSERT_GT(R.alternatives.size(), 0u) << text;
+    for (const SampleAlternatives& sample : R.alternatives) {
+      ASSERT_EQ(sample.ways.size(), 2u) << text;
+      std::size_t zeroWays = 0;
+      for (const OracleAlternative& way : sample.ways) {
+        bool zero = true;
+        for (std::size_t c = 0; c < 3; ++c) {
+          zero = zero && way.lo[c] == 0.0 && way.hi[c] == 0.0;
+          EXPECT_LE(way.lo[c], way.reference[c]);
+          EXPECT_LE(way.reference[c], way.hi[c]);
+          // The hull of the ways is the sample's range.
+          EXPECT_LE(R.lo[sample.sample * 3 + c], way.lo[c]);
+          EXPECT_GE(R.hi[sample.sample * 3 + c], way.hi[c]);
+        }
+        zeroWays += zero ? 1 : 0;
+      }
+      EXPECT_EQ(zeroWays, 1u) << text;  // total reflection one way, a ray the other
+    }
+  }
 }
 
 }  // namespace

@@ -38,6 +38,9 @@ struct Comparison {
   std::size_t skipped = 0;          // undefined in either oracle
   std::vector<double> widthRatios;  // where both widths are finite and the hand-written's > 0
   std::string firstOutside;
+  // Samples whose branches may go either way, kept apart as alternatives.
+  std::size_t handWays = 0, derivedWays = 0;
+  std::size_t waySamplesDiffer = 0;
 };
 
 bool withinUlps(double a, double b, double ulps) {
@@ -58,6 +61,16 @@ Comparison compare(const std::vector<OracleVarying>& hand,
       continue;
     }
     EXPECT_EQ(d->components, h.components) << h.name;
+    result.handWays += h.alternatives.size();
+    result.derivedWays += d->alternatives.size();
+    if (h.alternatives.size() != d->alternatives.size()) {
+      ++result.waySamplesDiffer;
+    } else {
+      for (std::size_t k = 0; k < h.alternatives.size(); ++k)
+        if (h.alternatives[k].sample != d->alternatives[k].sample ||
+            h.alternatives[k].ways.size() != d->alternatives[k].ways.size())
+          ++result.waySamplesDiffer;
+    }
     for (std::size_t i = 0; i < h.reference.size(); ++i) {
       ++result.components;
       if (h.undefined[i] || d->undefined[i]) {
@@ -114,15 +127,17 @@ TEST_P(DerivedCrossCheck, HoldsTheHandWrittenExactValueAndReportsWidths) {
   ASSERT_GT(c.components, 0u);
   EXPECT_EQ(c.outside, 0u) << c.firstOutside;
   EXPECT_EQ(c.exactMismatch, 0u);
+  // Both keep the same samples' ways apart, with as many ways.
+  EXPECT_EQ(c.waySamplesDiffer, 0u) << c.handWays << " vs " << c.derivedWays;
   // Undefined samples are not compared; they must stay rare.
   EXPECT_LT(c.skipped * 10, c.components);
   ASSERT_FALSE(c.widthRatios.empty());
   const double worst = *std::max_element(c.widthRatios.begin(), c.widthRatios.end());
   std::printf(
       "[ widths   ] %-24s %-6s derived/hand-written width: median %.3f, worst %.3f "
-      "(%zu components, %zu undefined)\n",
+      "(%zu components, %zu undefined, %zu samples with ways apart)\n",
       listing.label().c_str(), precisionRulesName(rules), median(c.widthRatios), worst,
-      c.components, c.skipped);
+      c.components, c.skipped, c.derivedWays);
   EXPECT_LE(worst, kWorstWidthRatio);
   EXPECT_NEAR(median(c.widthRatios), 1.0, 1e-12);
 }
