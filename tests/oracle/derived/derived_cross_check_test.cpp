@@ -19,12 +19,13 @@ namespace {
 // The width bounds (derived / hand-written). Both oracles run the same
 // built-ins over the same operations in the same order, so wherever every
 // condition is decided the intervals are the same: the median ratio is 1.
-// They may part where a condition can go either way: the hand-written
-// oracle keeps each way apart and reports the hull of the ways' outputs,
-// while the derived one takes the hull at the branch and carries it through
-// the operations after it (a refract() whose result then goes through
-// TextureMatrix * vec4(R, 1)). A hull carried through a row of a 4 x 4
-// matrix is at most four terms each as wide as the widest way, hence 4.
+// Where a condition may go either way both keep the ways apart and report
+// their hull, so the ratio stays 1 there too, unless the paths exceed
+// kMaxBranchPaths and a sample falls back to the hull taken at each branch
+// and carried through the operations after it (a refract() whose result
+// then goes through TextureMatrix * vec4(R, 1)). A hull carried through a
+// row of a 4 x 4 matrix is at most four terms each as wide as the widest
+// way, hence 4 for the worst sample.
 constexpr double kWorstWidthRatio = 4.0;
 
 // How far apart two exact values may be: a few double ulps, for an
