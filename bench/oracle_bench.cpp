@@ -4,27 +4,12 @@
 // Run: build/bench/snell_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 
-#include "core/scene.h"
+#include "fresnel_inputs.h"
 #include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell {
 namespace {
-
-// The uniforms Listing 14.1 binds, by its GLSL names, from the scene.
-struct FresnelInputs {
-  Scene scene = makeScene("sphere");
-  UniformMap uniforms{{"MVMatrix", scene.values.at("modelview")},
-                      {"MVPMatrix", scene.values.at("modelview_projection")},
-                      {"NormalMatrix", scene.values.at("normal_matrix")},
-                      {"TextureMatrix", scene.values.at("texture_matrix")}};
-  AttributeMap attributes;
-  ConstantMap constants{{"Eta", 0.66}, {"FresnelPower", 5.0}};
-  FresnelInputs() {
-    attributes["MCvertex"] = scene.attributes.at("position");
-    attributes["MCnormal"] = scene.attributes.at("normal");
-  }
-};
 
 void vertexOracleOnSphere(benchmark::State& state) {
   const FresnelInputs in;
@@ -39,9 +24,15 @@ BENCHMARK(vertexOracleOnSphere)->Unit(benchmark::kMillisecond);
 void referenceImageOfSphere(benchmark::State& state) {
   const FresnelInputs in;
   for (auto _ : state) {
-    ReferenceInput input{"orange_book_fresnel", in.uniforms, in.constants, in.attributes,
-                         in.scene.vertexCount, in.scene.indices,
-                         {{"Cubemap", in.scene.environment.get()}}, in.scene.width, in.scene.height};
+    ReferenceInput input{"orange_book_fresnel",
+                         in.uniforms,
+                         in.constants,
+                         in.attributes,
+                         in.scene.vertexCount,
+                         in.scene.indices,
+                         {{"Cubemap", in.scene.environment.get()}},
+                         in.scene.width,
+                         in.scene.height};
     benchmark::DoNotOptimize(renderReferenceImage(input));
   }
   state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);

@@ -15,6 +15,7 @@
 #include "oracle/listings/interface_checks.h"
 #include "oracle/listings/interface_visitors.h"
 #include "oracle/vertex_oracle.h"
+#include "oracle/way_alternatives.h"
 
 namespace snell::listings {
 
@@ -132,7 +133,7 @@ class ListingOracle final : public VertexOracle {
         replayed.main();
         references.push_back(outputsOf(replayed));
       }
-      addAlternatives(varyings, vertex, ways, references);
+      addWayAlternatives(varyings, vertex, ways, references);
     }
   }
 
@@ -142,34 +143,6 @@ class ListingOracle final : public VertexOracle {
     AssignOutputs<Interval> assign(values);
     shader.visit(assign);
     shader.visit(capture);
-  }
-
-  // Each varying's distinct ways at this vertex, when it has more than one.
-  static void addAlternatives(std::vector<OracleVarying>& varyings, std::size_t vertex,
-                              const std::vector<std::vector<Interval>>& ways,
-                              const std::vector<std::vector<double>>& references) {
-    std::size_t offset = 0;
-    for (OracleVarying& varying : varyings) {
-      const auto components = static_cast<std::size_t>(varying.components);
-      SampleAlternatives sample{vertex, {}};
-      for (std::size_t w = 0; w < ways.size(); ++w) {
-        OracleAlternative way;
-        for (std::size_t c = 0; c < components; ++c) {
-          const Interval& value = ways[w][offset + c];
-          way.reference.push_back(references[w][offset + c]);
-          way.lo.push_back(value.lo);
-          way.hi.push_back(value.hi);
-          way.undefined.push_back(value.undefined ? 1 : 0);
-        }
-        const auto same = [&](const OracleAlternative& other) {
-          return other.lo == way.lo && other.hi == way.hi && other.undefined == way.undefined;
-        };
-        if (std::none_of(sample.ways.begin(), sample.ways.end(), same))
-          sample.ways.push_back(std::move(way));
-      }
-      if (sample.ways.size() > 1) varying.alternatives.push_back(std::move(sample));
-      offset += components;
-    }
   }
 
   std::string name_;

@@ -1,0 +1,21 @@
+#pragma once
+// A VertexOracle (oracle/vertex_oracle.h) derived from a shader's own text:
+// the listing's GLSL lowered once (lower_glsl.h), then evaluated for
+// double, float and Interval over every sample (evaluate.h). Uniforms and
+// inputs are bound by their GLSL names; the manifest's `constants` are not
+// read, because the shader's own text says what its constants are.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "oracle/derived/lower_glsl.h"
+#include "oracle/vertex_oracle.h"
+
+namespace snell::derived {
+
+// Throws UsageError when the shader is outside the subset (naming the
+// construct and its line) or does not compute a requested output.
+std::unique_ptr<VertexOracle> makeDerivedVertexOracle(const ShaderSource& source,
+                                                      const std::vector<std::string>& outputs = {});
+
+}  // namespace snell::derived

@@ -1,0 +1,736 @@
+#include "oracle/derived/lower_glsl.h"
+
+#include <fmt/format.h>
+#include <glslang/Include/intermediate.h>
+#include <glslang/MachineIndependent/localintermediate.h>
+#include <glslang/Public/ResourceLimits.h>
+#include <glslang/Public/ShaderLang.h>
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+
+#include "core/errors.h"
+#include "core/legacy_builtins.h"
+#include "oracle/derived/program_builder.h"
+
+namespace snell::derived {
+namespace {
+
+using ::TIntermNode;
+using glslang::TIntermAggregate;
+using glslang::TIntermBinary;
+using glslang::TIntermSymbol;
+using glslang::TIntermTyped;
+using glslang::TIntermUnary;
+
+// glslang keeps process-wide tables; they live until the process exits.
+void ensureGlslangInitialised() {
+  struct Process {
+    Process() { glslang::InitializeProcess(); }
+    ~Process() { glslang::FinalizeProcess(); }
+  };
+  static Process process;
+}
+
+// `const` blanked to spaces (see the header): the token only, not names
+// that contain it.
+std::string withoutConstQualifiers(const std::string& text) {
+  static const std::regex kConst(R"(\bconst\b)");
+  return std::regex_replace(text, kConst, "     ");
+}
+
+constexpr const char* kAdvice =
+    "give the listing a hand-written oracle (manifest `oracle`), or rewrite it without that "
+    "construct, or capture the values it needs before that line";
+
+// A variable's storage in the lowering environment: a symbol by its
+// glslang id, or one member of an interface block (gl_Position in
+// gl_PerVertex) by block id and member.
+using Key = long long;
+Key symbolKey(const TIntermSymbol& symbol) { return static_cast<Key>(symbol.getId()); }
+Key memberKey(const TIntermSymbol& block, int member) {
+  return (static_cast<Key>(block.getId() + 1) << 8) + member + (Key{1} << 60);
+}
+
+class Lowering {
+ public:
+  Lowering(const ShaderSource& source, TIntermNode* root)
+      : source_(source), builder_(source.file, source.text) {
+    collectFunctions(root);
+  }
+
+  Program run(const std::vector<std::string>& requested) {
+    TIntermAggregate* root = nullptr;
+    for (auto& [name, function] : functions_)
+      if (name == "main(") root = function;
+    if (!root) throw UsageError(fmt::format("{}: the shader has no main()", source_.file));
+    for (TIntermNode* global : globals_) statement(global);
+    inMain_ = true;
+    functionBody(*root, /*allowReturnValue=*/false);
+    std::vector<Variable> outputs;
+    std::vector<std::string> names = requested;
+    if (names.empty()) names = writtenOutputs_;
+    for (const std::string& name : names) outputs.push_back(output(name));
+    return builder_.finish(std::move(outputs));
+  }
+
+ private:
+  [[noreturn]] void refuse(const TIntermNode& node, const std::string& what) const {
+    throw UsageError(builder_.unsupported(what, node.getLoc().line) + "; " + kAdvice);
+  }
+
+  void collectFunctions(TIntermNode* root) {
+    TIntermAggregate* sequence = root ? root->getAsAggregate() : nullptr;
+    if (!sequence) return;
+    for (TIntermNode* child : sequence->getSequence()) {
+      TIntermAggregate* aggregate = child->getAsAggregate();
+      if (aggregate && aggregate->getOp() == glslang::EOpFunction) {
+        functions_[aggregate->getName().c_str()] = aggregate;
+      } else if (aggregate && aggregate->getOp() == glslang::EOpLinkerObjects) {
+        continue;
+      } else {
+        globals_.push_back(child);
+      }
+    }
+  }
+
+  // --- statements -----------------------------------------------------
+
+  void statement(TIntermNode* node) {
+    if (!node) return;
+    if (TIntermAggregate* aggregate = node->getAsAggregate()) {
+      if (aggregate->getOp() == glslang::EOpSequence) {
+        for (TIntermNode* child : aggregate->getSequence()) statement(child);
+        return;
+      }
+    }
+    if (glslang::TIntermLoop* loop = node->getAsLoopNode()) {
+      unrolled(*loop);
+      return;
+    }
+    if (glslang::TIntermSelection* selection = node->getAsSelectionNode()) {
+      ifElse(*selection);
+      return;
+    }
+    if (node->getAsSwitchNode()) refuse(*node, "a switch");
+    if (const glslang::TIntermBranch* branch = node->getAsBranchNode()) {
+      switch (branch->getFlowOp()) {
+        case glslang::EOpReturn:
+          refuse(*node, "a return before the end of a function");
+        case glslang::EOpKill:
+          refuse(*node, "discard");
+        default:
+          refuse(*node, "break/continue");
+      }
+    }
+    // A declaration without initializer is a bare symbol: nothing to do.
+    if (node->getAsSymbolNode()) return;
+    if (TIntermTyped* typed = node->getAsTyped()) {
+      if (isInt(*typed)) {
+        intStatement(*typed);
+      } else {
+        expression(*typed);
+      }
+      return;
+    }
+    refuse(*node, "this statement");
+  }
+
+  // --- loops and the ints that count them ------------------------------
+  // A for loop whose counter is known when the shader is compiled (GLSL ES
+  // 1.00 appendix A's form, which every catalog loop has) is unrolled:
+  // its ints are compile-time values, never oracle values.
+
+  static bool isInt(const TIntermTyped& node) {
+    const glslang::TBasicType type = node.getBasicType();
+    return (type == glslang::EbtInt || type == glslang::EbtUint) && node.getType().isScalar();
+  }
+
+  static constexpr int kMaxIterations = 1024;
+
+  void unrolled(glslang::TIntermLoop& loop) {
+    if (!loop.getTerminal() || !loop.testFirst() || !loop.getTest())
+      refuse(loop, loop.testFirst() ? "a while loop" : "a do-while loop");
+    for (int iteration = 0;; ++iteration) {
+      if (!compileTimeBool(*loop.getTest())) return;
+      if (iteration == kMaxIterations)
+        refuse(loop, fmt::format("a loop of more than {} iterations", kMaxIterations));
+      statement(loop.getBody());
+      intStatement(*loop.getTerminal());
+    }
+  }
+
+  // An int assignment, ++ or --: updates the compile-time value.
+  void intStatement(TIntermTyped& node) {
+    using namespace glslang;
+    if (TIntermUnary* unary = node.getAsUnaryNode()) {
+      const TOperator op = unary->getOp();
+      const int step = op == EOpPostIncrement || op == EOpPreIncrement   ? 1
+                       : op == EOpPostDecrement || op == EOpPreDecrement ? -1
+                                                                         : 0;
+      if (step != 0) {
+        ints_[intVariable(*unary->getOperand())] += step;
+        return;
+      }
+    }
+    if (TIntermBinary* binary = node.getAsBinaryNode()) {
+      const TOperator op = binary->getOp();
+      if (op == EOpAssign || op == EOpAddAssign || op == EOpSubAssign) {
+        const long long value = compileTimeInt(*binary->getRight());
+        long long& variable = ints_[intVariable(*binary->getLeft())];
+        variable = op == EOpAssign      ? value
+                   : op == EOpAddAssign ? variable + value
+                                        : variable - value;
+        return;
+      }
+    }
+    refuse(node, "this int statement");
+  }
+
+  Key intVariable(TIntermTyped& node) const {
+    TIntermSymbol* symbol = node.getAsSymbolNode();
+    if (!symbol) refuse(node, "an int l-value that is not a variable");
+    return symbolKey(*symbol);
+  }
+
+  long long compileTimeInt(TIntermTyped& node) const {
+    using namespace glslang;
+    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
+      return constant->getConstArray()[0].getIConst();
+    if (TIntermSymbol* symbol = node.getAsSymbolNode()) {
+      auto found = ints_.find(symbolKey(*symbol));
+      if (found == ints_.end())
+        refuse(node, fmt::format("the int {}, whose value is not known when the shader is compiled",
+                                 symbol->getName().c_str()));
+      return found->second;
+    }
+    if (TIntermBinary* binary = node.getAsBinaryNode()) {
+      const long long a = compileTimeInt(*binary->getLeft());
+      const long long b = compileTimeInt(*binary->getRight());
+      switch (binary->getOp()) {
+        case EOpAdd:
+          return a + b;
+        case EOpSub:
+          return a - b;
+        case EOpMul:
+          return a * b;
+        default:
+          break;
+      }
+    }
+    refuse(node, "this int expression");
+  }
+
+  bool compileTimeBool(TIntermTyped& node) const {
+    using namespace glslang;
+    TIntermBinary* binary = node.getAsBinaryNode();
+    if (!binary || !isInt(*binary->getLeft()) || !isInt(*binary->getRight()))
+      refuse(node, "a loop condition that is not a comparison of ints");
+    const long long a = compileTimeInt(*binary->getLeft());
+    const long long b = compileTimeInt(*binary->getRight());
+    switch (binary->getOp()) {
+      case EOpLessThan:
+        return a < b;
+      case EOpLessThanEqual:
+        return a <= b;
+      case EOpGreaterThan:
+        return a > b;
+      case EOpGreaterThanEqual:
+        return a >= b;
+      case EOpEqual:
+        return a == b;
+      case EOpNotEqual:
+        return a != b;
+      default:
+        refuse(node, "this loop condition");
+    }
+  }
+
+  // Both ways are lowered from the same state; each variable either way
+  // changed becomes a choice between its two values (ProgramBuilder::select).
+  void ifElse(glslang::TIntermSelection& node) {
+    const Value condition = this->condition(*node.getCondition());
+    const std::map<Key, Value> before = variables_;
+    const std::map<Key, long long> intsBefore = ints_;
+    statement(node.getTrueBlock());
+    std::map<Key, Value> afterThen = std::move(variables_);
+    variables_ = before;
+    statement(node.getFalseBlock());
+    std::map<Key, Value> afterElse = std::move(variables_);
+    variables_ = before;
+    if (ints_ != intsBefore) refuse(node, "an int assigned under a condition");
+    const auto same = [](const Value& a, const Value& b) {
+      return a.regs == b.regs && a.refusal == b.refusal;
+    };
+    for (const auto& [key, then] : afterThen) {
+      auto otherwise = afterElse.find(key);
+      // Declared inside one way only (a block's local), or written one way
+      // only where it was unset before: not a value after the if.
+      if (otherwise == afterElse.end()) continue;
+      variables_[key] = same(then, otherwise->second)
+                            ? then
+                            : builder_.select(condition, then, otherwise->second,
+                                              node.getLoc().line, refuser(node));
+    }
+  }
+
+  Value condition(TIntermTyped& node) {
+    const Value value = expression(node);
+    if (value.refusal.empty() && (value.shape.kind != Kind::Bool || value.regs.size() != 1))
+      refuse(node, "a condition that is not one bool");
+    return value;
+  }
+
+  Refuse refuser(const TIntermNode& node) const {
+    return [this, &node](const std::string& what) { refuse(node, what); };
+  }
+
+  // Lowers a function's body; returns the value of its final `return`.
+  Value functionBody(TIntermAggregate& function, bool allowReturnValue) {
+    const glslang::TIntermSequence& parts = function.getSequence();
+    if (parts.size() < 2 || !parts[1]) return Value{};
+    TIntermAggregate* body = parts[1]->getAsAggregate();
+    if (!body) {
+      statement(parts[1]);
+      return Value{};
+    }
+    const glslang::TIntermSequence& statements = body->getSequence();
+    for (std::size_t k = 0; k < statements.size(); ++k) {
+      const glslang::TIntermBranch* branch = statements[k]->getAsBranchNode();
+      if (branch && branch->getFlowOp() == glslang::EOpReturn && k + 1 == statements.size()) {
+        if (!branch->getExpression()) return Value{};
+        if (!allowReturnValue) refuse(*branch, "a return value from main()");
+        return expression(*branch->getExpression());
+      }
+      statement(statements[k]);
+    }
+    return Value{};
+  }
+
+  // --- expressions ----------------------------------------------------
+
+  Value expression(TIntermTyped& node) {
+    const int line = node.getLoc().line;
+    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
+      return constantValue(*constant);
+    if (TIntermSymbol* symbol = node.getAsSymbolNode()) return read(*symbol);
+    if (TIntermBinary* binary = node.getAsBinaryNode()) return binaryExpression(*binary, line);
+    if (TIntermUnary* unary = node.getAsUnaryNode()) return unaryExpression(*unary, line);
+    if (TIntermAggregate* aggregate = node.getAsAggregate())
+      return aggregateExpression(*aggregate, line);
+    if (glslang::TIntermSelection* selection = node.getAsSelectionNode()) {
+      TIntermTyped* then = selection->getTrueBlock()->getAsTyped();
+      TIntermTyped* otherwise = selection->getFalseBlock()->getAsTyped();
+      if (!then || !otherwise) refuse(node, "this ?: expression");
+      const Value chosen = condition(*selection->getCondition());
+      return builder_.select(chosen, expression(*then), expression(*otherwise), line,
+                             refuser(node));
+    }
+    refuse(node, "this expression");
+  }
+
+  Shape shapeOf(const TIntermTyped& node) const {
+    const glslang::TType& type = node.getType();
+    if (type.isArray()) refuse(node, "an array");
+    Shape shape;
+    switch (type.getBasicType()) {
+      case glslang::EbtFloat:
+        shape.kind = Kind::Float;
+        break;
+      case glslang::EbtBool:
+        shape.kind = Kind::Bool;
+        break;
+      case glslang::EbtInt:
+      case glslang::EbtUint:
+        refuse(node, "an int value");
+      case glslang::EbtDouble:
+        refuse(node, "a double value");
+      case glslang::EbtSampler:
+        shape.kind = Kind::Opaque;
+        return shape;
+      default:
+        refuse(node, fmt::format("a value of type {}", type.getBasicTypeString().c_str()));
+    }
+    if (type.isMatrix()) {
+      shape.columns = type.getMatrixCols();
+      shape.rows = type.getMatrixRows();
+    } else {
+      shape.rows = type.getVectorSize();
+    }
+    return shape;
+  }
+
+  Value constantValue(const glslang::TIntermConstantUnion& node) {
+    const Shape shape = shapeOf(node);
+    const glslang::TConstUnionArray& data = node.getConstArray();
+    Value value{shape, {}, {}};
+    for (int k = 0; k < shape.size(); ++k) {
+      const double number =
+          shape.kind == Kind::Bool ? (data[k].getBConst() ? 1.0 : 0.0) : data[k].getDConst();
+      value.regs.push_back(builder_.literal(number, shape.kind == Kind::Bool));
+    }
+    return value;
+  }
+
+  // An int constant used as an index or a swizzle selector.
+  int constantIndex(TIntermTyped& node) const {
+    glslang::TIntermConstantUnion* constant = node.getAsConstantUnion();
+    if (!constant) refuse(node, "an index that is not a constant");
+    return constant->getConstArray()[0].getIConst();
+  }
+
+  Value read(TIntermSymbol& symbol) {
+    const Key key = symbolKey(symbol);
+    const std::string name = symbol.getName().c_str();
+    noteName(name, key);
+    auto found = variables_.find(key);
+    if (found != variables_.end()) return checkedRead(found->second, symbol);
+    const int line = symbol.getLoc().line;
+    if (name.rfind("gl_", 0) == 0) {
+      const Value value =
+          builtinVariable(name, symbol.getType().isArray() ? Shape{} : shapeOf(symbol), line);
+      variables_[key] = value;
+      return value;
+    }
+    const Shape shape = shapeOf(symbol);
+    const glslang::TStorageQualifier storage = symbol.getQualifier().storage;
+    Value value{shape, {}, {}};
+    if (shape.kind == Kind::Opaque) {
+      value.refusal =
+          builder_.unsupported(fmt::format("the sampler {} (no texture lookups yet)", name), line);
+    } else if (storage == glslang::EvqUniform) {
+      value.regs = builder_.uniform(name, shape.size(), line);
+    } else if (storage == glslang::EvqVaryingIn) {
+      value.regs = builder_.input(name, shape.size(), line);
+    } else {
+      refuse(symbol, fmt::format("reading {} before it is assigned", name));
+    }
+    variables_[key] = value;
+    return value;
+  }
+
+  // Legacy fixed-function state (gl_ModelViewMatrix, gl_TextureMatrix[1],
+  // gl_Vertex), by the names of the state table (core/legacy_builtins.h)
+  // that manifests bind; any other built-in (gl_FragCoord, ...) is refused
+  // where a requested value needs it.
+  Value builtinVariable(const std::string& name, Shape shape, int line) {
+    Value value{shape, {}, {}};
+    const std::optional<LegacyBuiltin> legacy = findLegacyBuiltin(name);
+    if (!legacy) {
+      value.refusal = builder_.unsupported("the built-in " + name, line);
+    } else if (legacy->kind == LegacyBuiltinKind::Attribute) {
+      value.regs = builder_.input(name, shape.size(), line);
+    } else {
+      value.regs = builder_.uniform(name, shape.size(), line);
+    }
+    return value;
+  }
+
+  Value checkedRead(const Value& value, const TIntermTyped& node) const {
+    // A component written from a value the oracle cannot follow taints the
+    // whole variable: the refusal goes on, not a missing component.
+    if (!value.refusal.empty()) return value;
+    if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
+      refuse(node, "reading a component before it is assigned");
+    return value;
+  }
+
+  void noteName(const std::string& name, Key key) {
+    if (inMain_ || !inFunction_) names_[name] = key;
+  }
+
+  Value binaryExpression(TIntermBinary& node, int line) {
+    using namespace glslang;
+    const TOperator op = node.getOp();
+    switch (op) {
+      case EOpAssign:
+      case EOpAddAssign:
+      case EOpSubAssign:
+      case EOpMulAssign:
+      case EOpDivAssign:
+      case EOpVectorTimesScalarAssign:
+      case EOpMatrixTimesScalarAssign:
+        return assignment(node, line);
+      case EOpVectorSwizzle: {
+        const Value base = expression(*node.getLeft());
+        std::vector<int> picks;
+        for (TIntermNode* selector : node.getRight()->getAsAggregate()->getSequence())
+          picks.push_back(constantIndex(*selector->getAsTyped()));
+        return base.pick(picks, shapeOf(node));
+      }
+      case EOpIndexDirect: {
+        TIntermSymbol* array = node.getLeft()->getAsSymbolNode();
+        if (array && array->getType().isArray()) {
+          // gl_TextureMatrix[1]: one entry of the state table.
+          const std::string name =
+              fmt::format("{}[{}]", array->getName().c_str(), constantIndex(*node.getRight()));
+          if (name.rfind("gl_", 0) != 0) refuse(node, "an array");
+          return builtinVariable(name, shapeOf(node), line);
+        }
+        const Value base = expression(*node.getLeft());
+        const int index = constantIndex(*node.getRight());
+        if (base.shape.columns > 1) return base.column(index);
+        return base.pick({index}, shapeOf(node));
+      }
+      case EOpIndexDirectStruct: {
+        const auto [key, name] = member(node);
+        noteName(name, key);
+        auto found = variables_.find(key);
+        if (found == variables_.end())
+          refuse(node, fmt::format("reading {} before it is assigned", name));
+        return checkedRead(found->second, node);
+      }
+      case EOpIndexIndirect:
+        refuse(node, "an index that is not a constant");
+      default:
+        break;
+    }
+    const Value left = expression(*node.getLeft());
+    const Value right = expression(*node.getRight());
+    return builder_.binary(op, left, right, shapeOf(node), line,
+                           [&](const std::string& what) { refuse(node, what); });
+  }
+
+  // gl_Position and the other members of an interface block, by name.
+  std::pair<Key, std::string> member(TIntermBinary& node) const {
+    TIntermSymbol* block = node.getLeft()->getAsSymbolNode();
+    if (!block) refuse(node, "a struct member");
+    const int index = constantIndex(*node.getRight());
+    const glslang::TTypeList& fields = *block->getType().getStruct();
+    return {memberKey(*block, index), fields[index].type->getFieldName().c_str()};
+  }
+
+  Value assignment(TIntermBinary& node, int line) {
+    using namespace glslang;
+    Value value = expression(*node.getRight());
+    if (node.getOp() != EOpAssign) {
+      const Value current = expression(*node.getLeft());
+      TOperator op = EOpNull;
+      switch (node.getOp()) {
+        case EOpAddAssign:
+          op = EOpAdd;
+          break;
+        case EOpSubAssign:
+          op = EOpSub;
+          break;
+        case EOpDivAssign:
+          op = EOpDiv;
+          break;
+        default:
+          op = EOpMul;
+          break;
+      }
+      if (node.getOp() == EOpMulAssign && (current.shape.columns > 1 || value.shape.columns > 1))
+        refuse(node, "a matrix *= ");
+      value = builder_.binary(op, current, value, shapeOf(*node.getLeft()), line,
+                              [&](const std::string& what) { refuse(node, what); });
+    }
+    store(*node.getLeft(), value);
+    return value;
+  }
+
+  // Writes `value` into the l-value `target` (a variable, a swizzle or a
+  // component or column of one).
+  void store(TIntermTyped& target, const Value& value) {
+    std::vector<int> positions;
+    TIntermTyped* base = &target;
+    while (true) {
+      TIntermBinary* binary = base->getAsBinaryNode();
+      if (!binary) break;
+      if (binary->getOp() == glslang::EOpIndexDirectStruct) break;
+      std::vector<int> picks;
+      const Shape baseShape = shapeOf(*binary->getLeft());
+      if (binary->getOp() == glslang::EOpVectorSwizzle) {
+        for (TIntermNode* selector : binary->getRight()->getAsAggregate()->getSequence())
+          picks.push_back(constantIndex(*selector->getAsTyped()));
+      } else if (binary->getOp() == glslang::EOpIndexDirect) {
+        const int index = constantIndex(*binary->getRight());
+        if (baseShape.columns > 1) {
+          for (int r = 0; r < baseShape.rows; ++r) picks.push_back(index * baseShape.rows + r);
+        } else {
+          picks.push_back(index);
+        }
+      } else {
+        refuse(target, "this assignment target");
+      }
+      if (positions.empty()) {
+        positions = picks;
+      } else {
+        for (int& p : positions) p = picks[static_cast<std::size_t>(p)];
+      }
+      base = binary->getLeft();
+    }
+    Key key = 0;
+    std::string name;
+    if (TIntermSymbol* symbol = base->getAsSymbolNode()) {
+      key = symbolKey(*symbol);
+      name = symbol->getName().c_str();
+      const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
+      if (storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
+          storage == glslang::EvqFragColor)
+        noteOutput(name);
+    } else if (TIntermBinary* binary = base->getAsBinaryNode()) {
+      std::tie(key, name) = member(*binary);
+      noteOutput(name);
+    } else {
+      refuse(target, "this assignment target");
+    }
+    noteName(name, key);
+    auto found = variables_.find(key);
+    if (found == variables_.end()) {
+      const Shape shape = shapeOf(*base);
+      found = variables_.emplace(key, Value{shape, std::vector<Reg>(shape.size(), kUnassigned), {}})
+                  .first;
+    }
+    Value& variable = found->second;
+    if (positions.empty()) {
+      variable = value;
+      variable.shape = shapeOf(*base);
+      return;
+    }
+    if (!value.refusal.empty()) variable.refusal = value.refusal;
+    for (std::size_t k = 0; k < positions.size(); ++k)
+      variable.regs[static_cast<std::size_t>(positions[k])] =
+          value.regs.empty() ? kUnassigned : value.regs[k];
+  }
+
+  void noteOutput(const std::string& name) {
+    if (std::find(writtenOutputs_.begin(), writtenOutputs_.end(), name) == writtenOutputs_.end())
+      writtenOutputs_.push_back(name);
+  }
+
+  Value unaryExpression(TIntermUnary& node, int line) {
+    if (node.getOp() == glslang::EOpConvIntToFloat || node.getOp() == glslang::EOpConvUintToFloat)
+      return Value{
+          shapeOf(node),
+          {builder_.literal(static_cast<double>(compileTimeInt(*node.getOperand())), false)},
+          {}};
+    const Value operand = expression(*node.getOperand());
+    return builder_.unary(node.getOp(), operand, shapeOf(node), line,
+                          [&](const std::string& what) { refuse(node, what); });
+  }
+
+  Value aggregateExpression(TIntermAggregate& node, int line) {
+    if (node.getOp() == glslang::EOpFunctionCall) return call(node);
+    const auto refuseHere = [&](const std::string& what) { refuse(node, what); };
+    std::vector<Value> args;
+    const bool lookup = node.isTexture() || node.isSampling() || node.isImage();
+    for (TIntermNode* child : node.getSequence()) {
+      TIntermTyped* typed = child->getAsTyped();
+      if (!typed) refuse(node, "this call");
+      if (lookup) {
+        // The arguments of a lookup still count: an unsupported one is named.
+        if (typed->getBasicType() != glslang::EbtSampler) expression(*typed);
+        continue;
+      }
+      args.push_back(expression(*typed));
+    }
+    if (lookup) {
+      Value value{shapeOf(node), {}, {}};
+      value.refusal = builder_.unsupported(
+          "a texture lookup (the derived oracle follows values up to a lookup, not through it)",
+          line);
+      value.shape.kind = Kind::Float;
+      return value;
+    }
+    if (node.getOp() == glslang::EOpFtransform) {
+      // gl_ModelViewProjectionMatrix * gl_Vertex, as the hand-written
+      // oracles take it (GLSL 1.20 section 8.5 asks only for the
+      // fixed-function transform's result, which is that product).
+      const Value matrix =
+          builtinVariable("gl_ModelViewProjectionMatrix", Shape{Kind::Float, 4, 4}, line);
+      const Value vertex = builtinVariable("gl_Vertex", Shape{Kind::Float, 4, 1}, line);
+      return builder_.binary(glslang::EOpMatrixTimesVector, matrix, vertex, shapeOf(node), line,
+                             refuseHere);
+    }
+    if (node.isConstructor()) return builder_.construct(shapeOf(node), args, line, refuseHere);
+    return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere);
+  }
+
+  // A user function, inlined: its `in` parameters bound to the arguments.
+  Value call(TIntermAggregate& node) {
+    auto found = functions_.find(node.getName().c_str());
+    if (found == functions_.end())
+      refuse(node, fmt::format("a call of {} (no definition)", node.getName().c_str()));
+    TIntermAggregate& function = *found->second;
+    if (std::find(callStack_.begin(), callStack_.end(), &function) != callStack_.end())
+      refuse(node, "recursion");
+    std::vector<Value> args;
+    for (TIntermNode* child : node.getSequence()) args.push_back(expression(*child->getAsTyped()));
+    const glslang::TIntermSequence& parameters =
+        function.getSequence()[0]->getAsAggregate()->getSequence();
+    for (std::size_t k = 0; k < parameters.size(); ++k) {
+      TIntermSymbol* parameter = parameters[k]->getAsSymbolNode();
+      const glslang::TStorageQualifier storage = parameter->getQualifier().storage;
+      if (storage == glslang::EvqOut || storage == glslang::EvqInOut)
+        refuse(node, fmt::format("the out/inout parameter {} of {}", parameter->getName().c_str(),
+                                 function.getName().c_str()));
+      variables_[symbolKey(*parameter)] = args[k];
+    }
+    callStack_.push_back(&function);
+    const bool wasInMain = inMain_;
+    const bool wasInFunction = inFunction_;
+    inMain_ = false;
+    inFunction_ = true;
+    Value result = functionBody(function, /*allowReturnValue=*/true);
+    inMain_ = wasInMain;
+    inFunction_ = wasInFunction;
+    callStack_.pop_back();
+    return result;
+  }
+
+  Variable output(const std::string& name) {
+    auto key = names_.find(name);
+    if (key == names_.end())
+      throw UsageError(fmt::format(
+          "{}: the derived oracle was asked for '{}', which the shader's main() does not "
+          "compute; name an output or a local of main()",
+          source_.file, name));
+    const Value& value = variables_.at(key->second);
+    if (!value.refusal.empty())
+      throw UsageError(fmt::format("{} (needed for '{}'); {}", value.refusal, name, kAdvice));
+    if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
+      throw UsageError(
+          fmt::format("{}: '{}' is not completely assigned by main()", source_.file, name));
+    return Variable{name, value.regs};
+  }
+
+  const ShaderSource& source_;
+  ProgramBuilder builder_;
+  std::map<std::string, TIntermAggregate*> functions_;
+  std::vector<TIntermNode*> globals_;
+  std::map<Key, Value> variables_;
+  std::map<Key, long long> ints_;  // the compile-time ints (loop counters, their bounds)
+  std::map<std::string, Key> names_;
+  std::vector<std::string> writtenOutputs_;
+  std::vector<TIntermAggregate*> callStack_;
+  bool inMain_ = false;
+  bool inFunction_ = false;
+};
+
+}  // namespace
+
+Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs) {
+  ensureGlslangInitialised();
+  const std::string text = withoutConstQualifiers(source.text);
+  const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
+  glslang::TShader shader(stage);
+  const char* strings = text.c_str();
+  const int length = static_cast<int>(text.size());
+  const char* name = source.file.c_str();
+  shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+  if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) {
+    std::string log = shader.getInfoLog();
+    log.erase(log.find_last_not_of(" \t\r\n") + 1);
+    throw UsageError(fmt::format(
+        "{}: glslang cannot compile the shader for the derived oracle:\n{}", source.file, log));
+  }
+  Lowering lowering(source, shader.getIntermediate()->getTreeRoot());
+  return lowering.run(outputs);
+}
+
+}  // namespace snell::derived

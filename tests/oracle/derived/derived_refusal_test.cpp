@@ -1,0 +1,169 @@
+// What the derived oracle's front end refuses, and how: one UsageError
+// naming the construct and FILE:LINE.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#include "core/errors.h"
+#include "derived_listings.h"
+
+namespace snell::test {
+namespace {
+
+std::string refusalOf(const std::string& text, derived::Stage stage = derived::Stage::Vertex,
+                      const std::vector<std::string>& outputs = {}) {
+  try {
+    derived::lowerShader({"user.vert", text, stage}, outputs);
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool mentions(const std::string& message, const std::string& part) {
+  return message.find(part) != std::string::npos;
+}
+
+TEST(DerivedRefusal, AWhileLoopIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 140
+in vec4 position;
+out float t;
+void main() {
+  t = 0.0;
+  while (t < 1.0)
+    t = t + 0.25;
+  gl_Position = position;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:6: a while loop")) << message;
+  EXPECT_TRUE(mentions(message, "`while (t < 1.0)`")) << message;  // the line as written
+}
+
+TEST(DerivedRefusal, ALoopWithoutAConstantBoundAndAnEarlyReturnAreRefusedWithTheirLines) {
+  const std::string message = refusalOf(R"(#version 140
+uniform int n;
+out float t;
+void main() {
+  t = 0.0;
+  for (int k = 0; k < n; ++k) t += 1.0;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:6: the int n, whose value is not known")) << message;
+  EXPECT_TRUE(mentions(refusalOf(R"(#version 140
+in vec4 position;
+out float t;
+float f(float x) {
+  if (x > 0.0)
+    return 1.0;
+  return 2.0;
+}
+void main() {
+  t = f(position.x);
+}
+)"),
+                       "user.vert:6: a return before the end of a function"));
+}
+
+TEST(DerivedRefusal, ATextureLookupInTheVertexStageIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 140
+in vec4 position;
+uniform samplerCube environment;
+out vec4 colour;
+void main() {
+  vec3 direction = normalize(position.xyz);
+  colour = texture(environment, direction);
+  gl_Position = position;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:7: a texture lookup")) << message;
+  EXPECT_TRUE(mentions(message, "needed for 'colour'")) << message;
+}
+
+// A lookup that no requested value depends on is no obstacle: CS 381's
+// fragment captures its vectors before the cube map lookup.
+TEST(DerivedRefusal, ALookupAfterTheCapturedValuesIsNoObstacle) {
+  const derived::Program program =
+      derived::lowerShader({"refraction.frag", readListing("cs381/refraction/refraction.frag"),
+                            derived::Stage::Fragment},
+                           {"viewdir", "refractview"});
+  ASSERT_EQ(program.outputs.size(), 2u);
+  EXPECT_EQ(program.inputs.size(), 2u);   // myvert, mynorm
+  EXPECT_TRUE(program.uniforms.empty());  // the sampler is not read
+}
+
+// Legacy state comes from the state table; a built-in outside it does not.
+TEST(DerivedRefusal, ABuiltInOutsideTheStateTableIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 120
+void main() {
+  vec2 p = gl_FragCoord.xy;
+  gl_FragColor = vec4(p, 0.0, 1.0);
+}
+)",
+                                        derived::Stage::Fragment, {"p"});
+  EXPECT_TRUE(mentions(message, "user.vert:3: the built-in gl_FragCoord")) << message;
+}
+
+TEST(DerivedRefusal, AnOutputTheShaderDoesNotComputeIsNamed) {
+  const std::string message = refusalOf(readListing("orange-book/14.1-fresnel/fresnel.vert"),
+                                        derived::Stage::Vertex, {"Refracted"});
+  EXPECT_TRUE(mentions(message, "'Refracted'")) << message;
+}
+
+TEST(DerivedRefusal, ASyntaxErrorIsReportedWithGlslangsMessage) {
+  const std::string message = refusalOf("#version 140\nvoid main() { float x = ; }\n");
+  EXPECT_TRUE(mentions(message, "user.vert: glslang cannot compile")) << message;
+}
+
+// Swizzles and constructors cost no operation: they only pick registers.
+TEST(DerivedLowering, SwizzlesAndConstructorsEmitNoOperations) {
+  const derived::Program program = derived::lowerShader({"user.vert", R"(#version 140
+in vec4 position;
+out vec3 v;
+void main() {
+  vec4 p = vec4(position.zyx, position.w);
+  v = p.xyz;
+}
+)"});
+  for (const derived::Op& op : program.ops)
+    EXPECT_EQ(op.code, derived::OpCode::Input) << derived::opCodeName(op.code);
+  ASSERT_EQ(program.outputs.size(), 1u);
+  EXPECT_EQ(program.outputs[0].components.size(), 3u);
+}
+
+}  // namespace
+}  // namespace snell::test
+
+namespace snell::test {
+namespace {
+
+// Every shader of the catalog, each stage with every output it writes,
+// either lowers or is refused with a located message: never a crash, never
+// another kind of error.
+TEST(DerivedRefusal, EveryCatalogShaderLowersOrIsRefusedWithItsFile) {
+  namespace fs = std::filesystem;
+  std::size_t lowered = 0, refused = 0;
+  for (const fs::directory_entry& entry :
+       fs::recursive_directory_iterator(fs::path(SNELL_SOURCE_ROOT) / "shaders")) {
+    const std::string extension = entry.path().extension().string();
+    if (extension != ".vert" && extension != ".frag") continue;
+    const std::string relative =
+        fs::relative(entry.path(), fs::path(SNELL_SOURCE_ROOT) / "shaders").string();
+    const derived::Stage stage =
+        extension == ".vert" ? derived::Stage::Vertex : derived::Stage::Fragment;
+    try {
+      derived::lowerShader({relative, readListing(relative), stage});
+      ++lowered;
+    } catch (const UsageError& e) {
+      ++refused;
+      std::printf("[ refused  ] %s\n", e.what());
+      EXPECT_TRUE(mentions(e.what(), relative + ":")) << e.what();
+    }
+  }
+  std::printf("[ catalog  ] %zu shader stages lowered whole, %zu refused\n", lowered, refused);
+  EXPECT_GE(lowered, 13u);  // every vertex stage of the cross-check, at least
+}
+
+}  // namespace
+}  // namespace snell::test
