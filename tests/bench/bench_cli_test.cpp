@@ -52,7 +52,7 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
   }
   const std::vector<std::string> methods{"1-constant-mix", "2-empirical", "3-schlick-vertex",
                                          "4-schlick-fragment", "5-exact-fragment"};
-  for (const std::string& backend : {"gl", "vk"})
+  for (const char* backend : {"gl", "vk"})
     for (const std::string& method : methods)
       EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
           << method << " on " << backend;
