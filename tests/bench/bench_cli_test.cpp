@@ -37,7 +37,7 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
   EXPECT_EQ(doc["scene"], "sphere");
   std::set<std::pair<std::string, std::string>> seen;
   for (const auto& r : doc["records"]) {
-    seen.insert({r["method"], r["backend"]});
+    seen.insert({r["method"].get<std::string>(), r["backend"].get<std::string>()});
     ASSERT_EQ(r["timings"].size(), 2u);
     for (const auto& t : r["timings"]) {
       EXPECT_GT(t["median_ms"].get<double>(), 0.0);
@@ -66,15 +66,16 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
 // the constant mix farthest, on every backend and by both metrics.
 TEST_F(BenchCli, ExactFresnelIsNearestTheReferenceAndTheConstantMixFarthest) {
   ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
   for (const std::string metric : {"rms", "de_mean"}) {
     for (const std::string backend : {"gl", "vk"}) {
       std::string best, worst;
       double bestError = 1e300, worstError = -1;
-      for (const auto& r : results()["records"]) {
+      for (const auto& r : doc["records"]) {
         if (r["backend"] != backend) continue;
         const double e = r["error"][metric].get<double>();
-        if (e < bestError) bestError = e, best = r["method"];
-        if (e > worstError) worstError = e, worst = r["method"];
+        if (e < bestError) bestError = e, best = r["method"].get<std::string>();
+        if (e > worstError) worstError = e, worst = r["method"].get<std::string>();
       }
       EXPECT_EQ(best, "methods/fresnel/5-exact-fragment") << metric << " on " << backend;
       EXPECT_EQ(worst, "methods/fresnel/1-constant-mix") << metric << " on " << backend;
