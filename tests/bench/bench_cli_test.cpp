@@ -2,6 +2,7 @@
 // the numbers come out for every method and backend, and are ordered where
 // physics says so. Timing is never asserted.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -17,7 +18,8 @@ namespace fs = std::filesystem;
 class BenchCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / "snell_bench_cli_test";
+    // One folder per process: ctest runs each test in a process of its own, in parallel.
+    dir_ = fs::temp_directory_path() / fmt::format("snell_bench_cli_test.{}", getpid());
     fs::remove_all(dir_);
     run_ = new Outcome(runSnell(
         fmt::format("bench --resolutions 24,48 --repeats 2 --warmup 0 --out {}", dir_.string())));
@@ -104,16 +106,17 @@ TEST_F(BenchCli, AdviseReadsTheLastBenchAndAnswersInJson) {
 }
 
 TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
+  const std::string badOut = fmt::format("/tmp/snell_bench_bad.{}", getpid());
   Outcome o = runSnell("advise --scene sphere --budget 1 --results /nonexistent/bench.json");
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("run `snell bench` first"), std::string::npos) << o.out;
-  o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out /tmp/snell_bench_bad");
+  o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("analytic sphere"), std::string::npos) << o.out;
-  o = runSnell("bench --metric psnr --out /tmp/snell_bench_bad");
+  o = runSnell("bench --metric psnr --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("unknown error metric"), std::string::npos) << o.out;
-  std::filesystem::remove_all("/tmp/snell_bench_bad");
+  std::filesystem::remove_all(badOut);
 }
 
 }  // namespace
