@@ -15,6 +15,9 @@
 #include "oracle/listings/cs381_glass.h"
 #include "oracle/listings/cs381_refraction.h"
 #include "oracle/listings/interface_visitors.h"
+#include "oracle/listings/method_directions.h"
+#include "oracle/listings/method_empirical.h"
+#include "oracle/listings/method_per_fragment.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_diffraction.h"
 #include "oracle/listings/orange_book_fresnel.h"
@@ -98,6 +101,9 @@ const std::map<std::string, Runner<T>>& runners() {
       {kShadertoyLensFresnelName,
        {&runOnce<ShadertoyLensFresnel, T>, &inputsOf<ShadertoyLensFresnel>}},
       {kShadertoyBubbleName, {&runOnce<ShadertoyBubble, T>, &inputsOf<ShadertoyBubble>}},
+      {kMethodDirectionsName, {&runOnce<MethodDirections, T>, &inputsOf<MethodDirections>}},
+      {kMethodEmpiricalName, {&runOnce<MethodEmpirical, T>, &inputsOf<MethodEmpirical>}},
+      {kMethodPerFragmentName, {&runOnce<MethodPerFragment, T>, &inputsOf<MethodPerFragment>}},
   };
   return table;
 }

@@ -7,13 +7,13 @@
 #include <map>
 #include <set>
 
+#include "backends/backend_registry.h"
 #include "cli/commands.h"
 #include "cli/suite_session.h"
 #include "compare/image_compare.h"
 #include "compare/image_io.h"
 #include "core/errors.h"
 #include "golden/golden_store.h"
-#include "backends/backend_registry.h"
 #include "runner/image_check.h"
 
 namespace snell::cli {
@@ -57,8 +57,8 @@ std::string describeChange(const fs::path& goldenDir, const Case& c, const std::
 
 int bless(const SuiteOptions& options) {
   if (!fs::is_directory(options.golden))
-    throw UsageError(fmt::format("{}: no such golden folder; create it or pass --golden DIR",
-                                 options.golden));
+    throw UsageError(
+        fmt::format("{}: no such golden folder; create it or pass --golden DIR", options.golden));
   const SuiteRun suite = runSuite(options, true, false);
   std::map<std::string, const Case*> cases;
   for (const Case& c : suite.cases) cases[c.id] = &c;
@@ -68,13 +68,16 @@ int bless(const SuiteOptions& options) {
     const Case& c = *cases.at(r.caseId);
     const std::string key = backendRegistry().find(r.backend).goldenKey;
     if (written.count({r.caseId, key})) {
-      fmt::print("{} {}: not blessed, its golden `{}` was written by another backend on the same "
-                 "driver in this run\n", r.backend, r.caseId, key);
+      fmt::print(
+          "{} {}: not blessed, its golden `{}` was written by another backend on the same "
+          "driver in this run\n",
+          r.backend, r.caseId, key);
       continue;
     }
     if (r.status != Status::Pass) {
       ++refused;
-      fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status), r.message);
+      fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status),
+                 r.message);
       continue;
     }
     const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));

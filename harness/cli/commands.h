@@ -21,6 +21,8 @@ Command addCompareCommand(CLI::App& app);
 Command addReportCommand(CLI::App& app);
 Command addDevicesCommand(CLI::App& app);
 Command addSweepCommand(CLI::App& app);
+Command addBenchCommand(CLI::App& app);
+Command addAdviseCommand(CLI::App& app);
 
 // Each registered backend: its renderer and versions, or why it does not
 // come up here (asked of worker processes). Returns 0.
@@ -29,5 +31,9 @@ int printBackendDrivers(const std::vector<std::string>& workerArgs);
 // The repository's own listings and goldens, where the binary was built from.
 std::string defaultShadersDir();
 std::string defaultGoldenDir();
+// The Fresnel method ladder, and where `snell bench` writes (and `snell
+// advise` reads) by default.
+std::string defaultMethodsDir();
+std::string defaultBenchDir();
 
 }  // namespace snell::cli

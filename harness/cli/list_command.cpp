@@ -11,7 +11,8 @@
 namespace snell::cli {
 
 Command addListCommand(CLI::App& app) {
-  CLI::App* list = app.add_subcommand("list", "List the cases: id, backends, expected status, source");
+  CLI::App* list =
+      app.add_subcommand("list", "List the cases: id, backends, expected status, source");
   struct Options {
     std::string shaders = defaultShadersDir();
     std::string filter;

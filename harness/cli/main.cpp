@@ -9,18 +9,19 @@
 #include "core/errors.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"snell: runs published reflection/refraction GLSL listings on OpenGL and Vulkan "
-               "and holds the results against a spec-derived CPU oracle"};
+  CLI::App app{
+      "snell: runs published reflection/refraction GLSL listings on OpenGL and Vulkan "
+      "and holds the results against a spec-derived CPU oracle"};
   bool version = false, drivers = false;
   app.add_flag("--version", version, "Print snell's version and exit");
   app.add_flag("--drivers", drivers, "With --version: each backend's renderer and versions");
   app.require_subcommand(0, 1);
   std::map<const CLI::App*, snell::cli::Command> commands;
-  for (auto add : {snell::cli::addRunCommand, snell::cli::addListCommand,
-                   snell::cli::addEvalCommand, snell::cli::addBlessCommand, snell::cli::addMergeCommand,
-                   snell::cli::addCompareCommand, snell::cli::addReportCommand,
-                   snell::cli::addWorkerCommand, snell::cli::addDevicesCommand,
-                   snell::cli::addSweepCommand}) {
+  for (auto add :
+       {snell::cli::addRunCommand, snell::cli::addListCommand, snell::cli::addEvalCommand,
+        snell::cli::addBlessCommand, snell::cli::addMergeCommand, snell::cli::addCompareCommand,
+        snell::cli::addReportCommand, snell::cli::addWorkerCommand, snell::cli::addDevicesCommand,
+        snell::cli::addSweepCommand, snell::cli::addBenchCommand, snell::cli::addAdviseCommand}) {
     const std::size_t before = app.get_subcommands({}).size();
     snell::cli::Command run = add(app);
     commands[app.get_subcommands({}).at(before)] = std::move(run);

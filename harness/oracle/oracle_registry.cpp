@@ -19,6 +19,9 @@
 #include "oracle/listings/cs381_chromatic_aberration.h"
 #include "oracle/listings/cs381_glass.h"
 #include "oracle/listings/cs381_refraction.h"
+#include "oracle/listings/method_directions.h"
+#include "oracle/listings/method_empirical.h"
+#include "oracle/listings/method_per_fragment.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_chromatic_fragment.h"
 #include "oracle/listings/orange_book_diffraction.h"
@@ -59,6 +62,9 @@ constexpr std::array kOracles = {
     RegisteredOracle{listings::kShadertoyLensFresnelName,
                      &listings::makeShadertoyLensFresnelOracle},
     RegisteredOracle{listings::kShadertoyBubbleName, &listings::makeShadertoyBubbleOracle},
+    RegisteredOracle{listings::kMethodDirectionsName, &listings::makeMethodDirectionsOracle},
+    RegisteredOracle{listings::kMethodEmpiricalName, &listings::makeMethodEmpiricalOracle},
+    RegisteredOracle{listings::kMethodPerFragmentName, &listings::makeMethodPerFragmentOracle},
 };
 
 struct RegisteredFragmentOracle {

@@ -13,6 +13,9 @@
 #include "oracle/listings/cs381_chromatic_aberration.h"
 #include "oracle/listings/cs381_glass.h"
 #include "oracle/listings/cs381_refraction.h"
+#include "oracle/listings/method_directions.h"
+#include "oracle/listings/method_empirical.h"
+#include "oracle/listings/method_per_fragment.h"
 #include "oracle/listings/orange_book_chromatic.h"
 #include "oracle/listings/orange_book_diffraction.h"
 #include "oracle/listings/orange_book_fresnel.h"
@@ -41,6 +44,9 @@ void forEachCatalogShader(Visit&& visit) {
   visit.template operator()<ShadertoyLens>(kShadertoyLensName, false);
   visit.template operator()<ShadertoyLensFresnel>(kShadertoyLensFresnelName, false);
   visit.template operator()<ShadertoyBubble>(kShadertoyBubbleName, false);
+  visit.template operator()<MethodDirections>(kMethodDirectionsName, false);
+  visit.template operator()<MethodEmpirical>(kMethodEmpiricalName, false);
+  visit.template operator()<MethodPerFragment>(kMethodPerFragmentName, false);
 }
 
 }  // namespace snell::test

@@ -1,0 +1,111 @@
+#include "bench/bench_record.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.h"
+#include "core/errors.h"
+
+namespace snell::bench {
+namespace {
+
+using nlohmann::json;
+
+json toJson(const BenchRecord& r) {
+  json timings = json::array();
+  for (const FrameTiming& t : r.timings)
+    timings.push_back({{"width", t.width},
+                       {"height", t.height},
+                       {"repeats", t.repeats},
+                       {"median_ms", t.medianMs},
+                       {"min_ms", t.minMs},
+                       {"max_ms", t.maxMs},
+                       {"p10_ms", t.p10Ms},
+                       {"p90_ms", t.p90Ms}});
+  return {{"method", r.method},
+          {"title", r.title},
+          {"backend", r.backend},
+          {"renderer", r.renderer},
+          {"ms_per_frame", r.msPerFrame()},
+          {"timings", timings},
+          {"error",
+           {{"width", r.errorWidth},
+            {"rms", r.error.rms},
+            {"max", r.error.max},
+            {"de_mean", r.error.deMean},
+            {"de_p95", r.error.deP95},
+            {"compared_pixels", r.error.compared},
+            {"coverage_mismatch_pixels", r.error.coverageMismatch}}}};
+}
+
+BenchRecord fromJson(const json& j) {
+  BenchRecord r;
+  r.method = j.at("method").get<std::string>();
+  r.title = j.value("title", "");
+  r.backend = j.at("backend").get<std::string>();
+  r.renderer = j.value("renderer", "");
+  for (const json& t : j.at("timings"))
+    r.timings.push_back({t.at("width").get<int>(), t.at("height").get<int>(), t.value("repeats", 0),
+                         t.at("median_ms").get<double>(), t.value("min_ms", 0.0),
+                         t.value("max_ms", 0.0), t.value("p10_ms", 0.0), t.value("p90_ms", 0.0)});
+  if (r.timings.empty()) throw std::invalid_argument("a record has no timings");
+  const json& e = j.at("error");
+  r.errorWidth = e.value("width", 0);
+  r.error.rms = e.at("rms").get<double>();
+  r.error.max = e.at("max").get<double>();
+  r.error.deMean = e.at("de_mean").get<double>();
+  r.error.deP95 = e.at("de_p95").get<double>();
+  r.error.compared = e.value("compared_pixels", std::size_t{0});
+  r.error.coverageMismatch = e.value("coverage_mismatch_pixels", std::size_t{0});
+  return r;
+}
+
+}  // namespace
+
+const std::vector<std::string>& errorMetricNames() {
+  static const std::vector<std::string> names{"rms", "max", "de_mean", "de_p95"};
+  return names;
+}
+
+double errorMetric(const ImageError& error, const std::string& metric) {
+  if (metric == "rms") return error.rms;
+  if (metric == "max") return error.max;
+  if (metric == "de_mean") return error.deMean;
+  if (metric == "de_p95") return error.deP95;
+  throw UsageError(fmt::format("unknown error metric `{}`; use one of {}", metric,
+                               fmt::join(errorMetricNames(), ", ")));
+}
+
+void writeBenchResults(const BenchResults& results, const std::filesystem::path& path) {
+  json records = json::array();
+  for (const BenchRecord& r : results.records) records.push_back(toJson(r));
+  const json doc{{"scene", results.scene}, {"reference", results.reference}, {"records", records}};
+  writeFileAtomically(path, doc.dump(2) + "\n");
+}
+
+BenchResults readBenchResults(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw UsageError(
+        fmt::format("{}: cannot read bench results; run `snell bench` first or give "
+                    "--results FILE",
+                    path.string()));
+  try {
+    const json doc = json::parse(in);
+    BenchResults results;
+    results.scene = doc.at("scene").get<std::string>();
+    results.reference = doc.value("reference", "");
+    for (const json& r : doc.at("records")) results.records.push_back(fromJson(r));
+    return results;
+  } catch (const std::exception& error) {
+    throw UsageError(
+        fmt::format("{}: not a `snell bench` results file ({}); run `snell bench` "
+                    "to write one",
+                    path.string(), error.what()));
+  }
+}
+
+}  // namespace snell::bench

@@ -1,0 +1,53 @@
+#pragma once
+// What `snell bench` measures, and its JSON form (what `snell advise`
+// reads back). One record per method and backend.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bench/image_error.h"
+
+namespace snell::bench {
+
+// Time per frame at one resolution: a render call (draw and read-back of
+// the RGBA32F image) after the pipeline was compiled and warmed up.
+struct FrameTiming {
+  int width = 0;
+  int height = 0;
+  int repeats = 0;
+  double medianMs = 0;
+  double minMs = 0;
+  double maxMs = 0;
+  double p10Ms = 0;  // the spread: 10th and 90th percentiles
+  double p90Ms = 0;
+};
+
+struct BenchRecord {
+  std::string method;  // the manifest id
+  std::string title;
+  std::string backend;  // "gl", "vk"
+  std::string renderer;
+  std::vector<FrameTiming> timings;  // one per resolution, in the order asked
+  ImageError error;                  // at the largest resolution
+  int errorWidth = 0;
+  // The largest resolution's median: the cost the chart and advisor use.
+  double msPerFrame() const { return timings.empty() ? 0.0 : timings.back().medianMs; }
+};
+
+struct BenchResults {
+  std::string scene;
+  std::string reference;  // what the physics reference models, in words
+  std::vector<BenchRecord> records;
+};
+
+// Error metric names: "rms", "max" (linear RGB), "de_mean", "de_p95"
+// (CIEDE2000). Unknown names throw UsageError listing the known ones.
+double errorMetric(const ImageError& error, const std::string& metric);
+const std::vector<std::string>& errorMetricNames();
+
+void writeBenchResults(const BenchResults& results, const std::filesystem::path& path);
+// Throws UsageError naming the file (and what is wrong) for a missing or
+// malformed file.
+BenchResults readBenchResults(const std::filesystem::path& path);
+
+}  // namespace snell::bench

@@ -1,0 +1,131 @@
+#include "bench/bench_runner.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "backends/backend.h"
+#include "bench/fresnel_reference_image.h"
+#include "compare/image_io.h"
+#include "core/case.h"
+#include "core/errors.h"
+#include "core/manifest.h"
+#include "core/scene.h"
+#include "runner/image_check.h"
+
+namespace snell::bench {
+namespace {
+
+double etaOf(const Manifest& m) {
+  const auto eta = m.constants.find("Eta");
+  if (eta == m.constants.end())
+    throw UsageError(
+        fmt::format("{}:1: a method needs `constants = {{ Eta = ... }}` (n1/n2 from "
+                    "air into the glass) for the physics reference",
+                    m.path.string()));
+  return eta->second;
+}
+
+Image renderOrThrow(Backend& backend, const RenderJob& job, const Manifest& m) {
+  RenderOutcome outcome = backend.render(job);
+  if (!outcome.compile.ok)
+    throw UsageError(fmt::format("{}: does not compile on {}:\n{}", m.path.string(), backend.name(),
+                                 outcome.compile.log));
+  return std::move(outcome.image);
+}
+
+FrameTiming timeFrames(Backend& backend, const RenderJob& job, const Manifest& m,
+                       const BenchOptions& options) {
+  renderOrThrow(backend, job, m);  // compiles and caches the pipeline
+  for (int k = 0; k < options.warmup; ++k) renderOrThrow(backend, job, m);
+  std::vector<double> ms;
+  for (int k = 0; k < options.repeats; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    renderOrThrow(backend, job, m);
+    const auto end = std::chrono::steady_clock::now();
+    ms.push_back(std::chrono::duration<double, std::milli>(end - start).count());
+  }
+  FrameTiming t;
+  t.width = job.width;
+  t.height = job.height;
+  t.repeats = options.repeats;
+  t.medianMs = percentile(ms, 50.0);
+  t.p10Ms = percentile(ms, 10.0);
+  t.p90Ms = percentile(ms, 90.0);
+  t.minMs = *std::min_element(ms.begin(), ms.end());
+  t.maxMs = *std::max_element(ms.begin(), ms.end());
+  return t;
+}
+
+void checkOptions(const BenchOptions& options) {
+  if (options.resolutions.empty()) throw UsageError("--resolutions: give at least one size");
+  for (int r : options.resolutions)
+    if (r < 8 || r > 4096)
+      throw UsageError(fmt::format("--resolutions: {} is outside 8 to 4096 pixels", r));
+  if (options.repeats < 1) throw UsageError("--repeats: time at least one frame");
+  if (options.warmup < 0) throw UsageError("--warmup: cannot be negative");
+  if (options.backends.empty()) throw UsageError("--backends: give at least one backend");
+}
+
+}  // namespace
+
+BenchResults runBench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress) {
+  checkOptions(options);
+  const std::vector<Manifest> methods = loadManifests(options.methodsDir);
+  if (methods.empty())
+    throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
+                                 options.methodsDir.string()));
+  const Scene baseScene = makeScene(options.scene);
+  const int errorSize = options.resolutions.back();
+
+  BenchResults results;
+  results.scene = options.scene;
+  results.reference = kFresnelReferenceModel;
+  std::map<double, ReferenceImage> references;  // by eta, at the error resolution
+  for (const Manifest& m : methods) {
+    const double eta = etaOf(m);
+    if (!references.count(eta))
+      references.emplace(eta, fresnelReferenceImage(baseScene, eta, errorSize, errorSize));
+  }
+
+  for (const std::string& backendName : options.backends) {
+    std::unique_ptr<Backend> backend = makeBackend(backendName, {});
+    for (const Manifest& m : methods) {
+      BenchRecord record;
+      record.method = m.id;
+      record.title = m.title;
+      record.backend = backend->name();
+      record.renderer = backend->driverInfo().renderer;
+      Image lastImage;
+      for (int size : options.resolutions) {
+        Scene scene = baseScene;
+        scene.width = size;
+        scene.height = size;
+        const RenderJob job = sceneRenderJob(m, scene, resolveBindings(m, scene));
+        record.timings.push_back(timeFrames(*backend, job, m, options));
+        if (size == errorSize) lastImage = renderOrThrow(*backend, job, m);
+      }
+      const ReferenceImage& reference = references.at(etaOf(m));
+      record.error = imageError(lastImage, reference.color, reference.covered);
+      record.errorWidth = errorSize;
+      if (!options.imagesDir.empty()) {
+        std::string stem = m.id;
+        std::replace(stem.begin(), stem.end(), '/', '_');
+        writeImageAtomically(options.imagesDir / fmt::format("{}.{}.exr", stem, record.backend),
+                             lastImage);
+      }
+      progress(fmt::format("{} on {}: {:.3f} ms per frame at {}px, CIEDE2000 mean {:.3f}", m.id,
+                           record.backend, record.msPerFrame(), errorSize, record.error.deMean));
+      results.records.push_back(std::move(record));
+    }
+  }
+  if (!options.imagesDir.empty())
+    writeImageAtomically(options.imagesDir / "physics_reference.exr",
+                         references.begin()->second.color);
+  return results;
+}
+
+}  // namespace snell::bench

@@ -1,0 +1,33 @@
+#pragma once
+// `snell bench`'s measurement: every method listing on every backend draws
+// the scene at each resolution; its time per frame is the median of warm
+// repeats (the pipeline compiled and a few frames drawn first), and its
+// error is its image held against the physics reference at the largest
+// resolution.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bench/bench_record.h"
+
+namespace snell::bench {
+
+struct BenchOptions {
+  std::filesystem::path methodsDir;  // manifests of the methods, e.g. shaders/methods/fresnel
+  std::string scene = "sphere";
+  std::vector<std::string> backends{"gl", "vk"};
+  std::vector<int> resolutions{128, 256, 512};  // square images
+  int warmup = 3;                               // untimed frames after the first draw
+  int repeats = 15;                             // timed frames per resolution
+  // The pixels each backend drew at the largest resolution go here (EXR),
+  // when not empty.
+  std::filesystem::path imagesDir;
+};
+
+// Runs the measurement; `progress` gets one line per method and backend.
+// Throws UsageError for bad options or a listing that does not compile.
+BenchResults runBench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress);
+
+}  // namespace snell::bench

@@ -1,0 +1,84 @@
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/advisor.h"
+#include "bench/bench_chart.h"
+#include "bench/bench_record.h"
+#include "cli/commands.h"
+
+namespace snell::cli {
+namespace {
+
+nlohmann::json recordJson(const std::optional<bench::BenchRecord>& r, const std::string& metric) {
+  if (!r) return nullptr;
+  return {{"method", r->method},
+          {"ms_per_frame", r->msPerFrame()},
+          {"error", bench::errorMetric(r->error, metric)},
+          {"rms", r->error.rms},
+          {"de_mean", r->error.deMean},
+          {"de_p95", r->error.deP95}};
+}
+
+std::string recordText(const bench::BenchRecord& r, const std::string& metric) {
+  return fmt::format("{} ({:.3f} ms per frame, {} {:.4g})", bench::shortMethodName(r.method),
+                     r.msPerFrame(), metric, bench::errorMetric(r.error, metric));
+}
+
+}  // namespace
+
+Command addAdviseCommand(CLI::App& app) {
+  CLI::App* advise = app.add_subcommand(
+      "advise",
+      "Name the cheapest measured method whose error stays within a budget (from "
+      "`snell bench` results)");
+  struct Options {
+    std::string scene;
+    double budget = 0;
+    std::string metric = "de_mean";
+    std::string results = defaultBenchDir() + "/bench.json";
+    std::string backend;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  advise->add_option("--scene", options->scene, "The scene the methods were measured on")
+      ->required();
+  advise
+      ->add_option("--budget", options->budget, "The largest error allowed, in the metric's units")
+      ->required();
+  advise->add_option("--metric", options->metric, "rms, max, de_mean (default) or de_p95");
+  advise->add_option("--results", options->results, "A `snell bench` bench.json");
+  advise->add_option("--backend", options->backend, "Only this backend (default: each measured)");
+  advise->add_flag("--json", options->json, "One JSON object on standard output, for scripts");
+  advise->footer("Exit code 0 when every backend has a method within budget, 1 when one has none.");
+  return [options] {
+    const bench::BenchResults results = bench::readBenchResults(options->results);
+    const std::vector<bench::Advice> advice =
+        bench::advise(results, options->scene, options->budget, options->metric, options->backend);
+    bool allMet = true;
+    nlohmann::json doc{{"scene", options->scene},
+                       {"budget", options->budget},
+                       {"metric", options->metric},
+                       {"backends", nlohmann::json::array()}};
+    for (const bench::Advice& a : advice) {
+      allMet = allMet && a.choice.has_value();
+      doc["backends"].push_back({{"backend", a.backend},
+                                 {"choice", recordJson(a.choice, options->metric)},
+                                 {"runner_up", recordJson(a.runnerUp, options->metric)},
+                                 {"most_accurate", recordJson(a.mostAccurate, options->metric)}});
+      if (options->json) continue;
+      if (a.choice) {
+        fmt::print("{}: {}", a.backend, recordText(*a.choice, options->metric));
+        if (a.runnerUp) fmt::print("; runner-up {}", recordText(*a.runnerUp, options->metric));
+        fmt::print("\n");
+      } else {
+        fmt::print("{}: no method within {} {}; the most accurate is {}\n", a.backend,
+                   options->metric, options->budget, recordText(*a.mostAccurate, options->metric));
+      }
+    }
+    if (options->json) fmt::print("{}\n", doc.dump(2));
+    return allMet ? 0 : 1;
+  };
+}
+
+}  // namespace snell::cli

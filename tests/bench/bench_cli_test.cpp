@@ -1,0 +1,123 @@
+// `snell bench` and `snell advise` as a user runs them, on a tiny image:
+// the numbers come out for every method and backend, and are ordered where
+// physics says so. Timing is never asserted.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "../cli/snell_process.h"
+
+namespace snell::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class BenchCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // One folder per process: ctest runs each test in a process of its own, in parallel.
+    dir_ = fs::temp_directory_path() / fmt::format("snell_bench_cli_test.{}", getpid());
+    fs::remove_all(dir_);
+    run_ = new Outcome(runSnell(
+        fmt::format("bench --resolutions 24,48 --repeats 2 --warmup 0 --out {}", dir_.string())));
+  }
+  static void TearDownTestSuite() {
+    delete run_;
+    fs::remove_all(dir_);
+  }
+  static nlohmann::json results() { return nlohmann::json::parse(readText(dir_ / "bench.json")); }
+  static inline fs::path dir_;
+  static inline Outcome* run_ = nullptr;
+};
+
+TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
+  EXPECT_EQ(doc["scene"], "sphere");
+  std::set<std::pair<std::string, std::string>> seen;
+  for (const auto& r : doc["records"]) {
+    seen.insert({r["method"].get<std::string>(), r["backend"].get<std::string>()});
+    ASSERT_EQ(r["timings"].size(), 2u);
+    for (const auto& t : r["timings"]) {
+      EXPECT_GT(t["median_ms"].get<double>(), 0.0);
+      EXPECT_LE(t["min_ms"].get<double>(), t["median_ms"].get<double>());
+      EXPECT_LE(t["median_ms"].get<double>(), t["max_ms"].get<double>());
+    }
+    EXPECT_EQ(r["error"]["width"], 48);
+    EXPECT_GT(r["error"]["compared_pixels"].get<int>(), 48 * 48 / 10);
+    EXPECT_LE(r["error"]["rms"].get<double>(), r["error"]["max"].get<double>());
+    EXPECT_LE(r["error"]["de_mean"].get<double>(), r["error"]["de_p95"].get<double>() + 1e-9)
+        << "a mean above the 95th percentile needs a heavy tail: " << r["method"];
+  }
+  const std::vector<std::string> methods{"1-constant-mix", "2-empirical", "3-schlick-vertex",
+                                         "4-schlick-fragment", "5-exact-fragment"};
+  for (const char* backend : {"gl", "vk"})
+    for (const std::string& method : methods)
+      EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
+          << method << " on " << backend;
+  EXPECT_EQ(seen.size(), 10u);
+  EXPECT_GT(fs::file_size(dir_ / "pareto.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "pareto.png"), 1000u);
+  EXPECT_NE(run_->out.find("Pareto front"), std::string::npos) << run_->out;
+}
+
+// Physics, not timing: the exact Fresnel method is nearest the reference and
+// the constant mix farthest, on every backend and by both metrics.
+TEST_F(BenchCli, ExactFresnelIsNearestTheReferenceAndTheConstantMixFarthest) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
+  for (const std::string metric : {"rms", "de_mean"}) {
+    for (const std::string backend : {"gl", "vk"}) {
+      std::string best, worst;
+      double bestError = 1e300, worstError = -1;
+      for (const auto& r : doc["records"]) {
+        if (r["backend"] != backend) continue;
+        const double e = r["error"][metric].get<double>();
+        if (e < bestError) bestError = e, best = r["method"].get<std::string>();
+        if (e > worstError) worstError = e, worst = r["method"].get<std::string>();
+      }
+      EXPECT_EQ(best, "methods/fresnel/5-exact-fragment") << metric << " on " << backend;
+      EXPECT_EQ(worst, "methods/fresnel/1-constant-mix") << metric << " on " << backend;
+    }
+  }
+}
+
+TEST_F(BenchCli, AdviseReadsTheLastBenchAndAnswersInJson) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const std::string results = (dir_ / "bench.json").string();
+  // A budget nothing but a perfect method meets: exit 1, the nearest miss named.
+  const Outcome none = runSnell("advise --scene sphere --budget 0 --results " + results);
+  EXPECT_EQ(none.code, 1) << none.out;
+  EXPECT_NE(none.out.find("no method within"), std::string::npos) << none.out;
+  // A budget every method meets: the cheapest is named with a runner-up.
+  const Outcome all = runSnell("advise --scene sphere --budget 1000 --json --results " + results);
+  ASSERT_EQ(all.code, 0) << all.out;
+  const nlohmann::json doc = nlohmann::json::parse(all.out);
+  ASSERT_EQ(doc["backends"].size(), 2u);
+  for (const auto& b : doc["backends"]) {
+    EXPECT_FALSE(b["choice"].is_null());
+    EXPECT_FALSE(b["runner_up"].is_null());
+    EXPECT_LE(b["choice"]["ms_per_frame"].get<double>(),
+              b["runner_up"]["ms_per_frame"].get<double>());
+  }
+}
+
+TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
+  const std::string badOut = fmt::format("/tmp/snell_bench_bad.{}", getpid());
+  Outcome o = runSnell("advise --scene sphere --budget 1 --results /nonexistent/bench.json");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("run `snell bench` first"), std::string::npos) << o.out;
+  o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("analytic sphere"), std::string::npos) << o.out;
+  o = runSnell("bench --metric psnr --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("unknown error metric"), std::string::npos) << o.out;
+  std::filesystem::remove_all(badOut);
+}
+
+}  // namespace
+}  // namespace snell::testing
