@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "fresnel_inputs.h"
-#include "oracle/derived/derived_vertex_oracle.h"
+#include "derived/derived_vertex_oracle.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell {

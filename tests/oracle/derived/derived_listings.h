@@ -12,9 +12,9 @@
 
 #include "core/scene.h"
 #include "core/values.h"
-#include "oracle/derived/derived_vertex_oracle.h"
-#include "oracle/derived/evaluate.h"
-#include "oracle/derived/lower_glsl.h"
+#include "derived/derived_vertex_oracle.h"
+#include "derived/evaluate.h"
+#include "derived/lower_glsl.h"
 
 namespace snell::test {
 

@@ -9,7 +9,7 @@
 
 #include "core/expected_values.h"
 #include "core/values.h"
-#include "oracle/derived/ir.h"
+#include "derived/ir.h"
 
 namespace snell::derived {
 

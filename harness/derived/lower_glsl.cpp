@@ -1,4 +1,4 @@
-#include "oracle/derived/lower_glsl.h"
+#include "derived/lower_glsl.h"
 
 #include <fmt/format.h>
 #include <glslang/Include/intermediate.h>
@@ -15,7 +15,7 @@
 
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
-#include "oracle/derived/program_builder.h"
+#include "derived/program_builder.h"
 
 namespace snell::derived {
 namespace {

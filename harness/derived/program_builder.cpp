@@ -1,4 +1,4 @@
-#include "oracle/derived/program_builder.h"
+#include "derived/program_builder.h"
 
 #include <fmt/format.h>
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "oracle/derived/ir.h"
+#include "derived/ir.h"
 
 namespace snell::derived {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "oracle/derived/lower_glsl.h"
+#include "derived/lower_glsl.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell::derived {

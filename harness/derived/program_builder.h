@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "oracle/derived/ir.h"
+#include "derived/ir.h"
 
 namespace snell::derived {
 

@@ -18,7 +18,7 @@
 
 #include "core/expected_values.h"
 #include "core/values.h"
-#include "oracle/derived/ir.h"
+#include "derived/ir.h"
 #include "oracle/precision_rules.h"
 
 namespace snell::derived {

@@ -1,8 +1,8 @@
-#include "oracle/derived/derived_vertex_oracle.h"
+#include "derived/derived_vertex_oracle.h"
 
 #include <utility>
 
-#include "oracle/derived/evaluate.h"
+#include "derived/evaluate.h"
 
 namespace snell::derived {
 namespace {

@@ -1,4 +1,4 @@
-#include "oracle/derived/evaluate.h"
+#include "derived/evaluate.h"
 
 #include <fmt/format.h>
 
@@ -11,7 +11,7 @@
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
 #include "oracle/branch_paths.h"
-#include "oracle/derived/sample_ways.h"
+#include "derived/sample_ways.h"
 #include "oracle/glsl/glsl.h"
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"

@@ -1,7 +1,7 @@
-#include "oracle/derived/sample_ways.h"
+#include "derived/sample_ways.h"
 
 #include "oracle/branch_paths.h"
-#include "oracle/derived/evaluate.h"
+#include "derived/evaluate.h"
 #include "oracle/glsl/scalar.h"
 #include "oracle/interval.h"
 #include "oracle/way_alternatives.h"
