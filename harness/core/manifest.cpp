@@ -1,13 +1,13 @@
 #include "core/manifest.h"
 
 #include <fmt/format.h>
+#include <toml++/toml.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "core/errors.h"
 #include "core/toml_keys.h"
@@ -35,9 +35,45 @@ class ManifestReader {
 
   std::string requiredString(const toml::table& table, std::string_view key, int tableLine) const {
     const toml::node* node = table.get(key);
-    if (!node) fail(tableLine, fmt::format("missing field `{}`; add it (see shaders/README.md)", key));
+    if (!node)
+      fail(tableLine, fmt::format("missing field `{}`; add it (see shaders/README.md)", key));
     if (!node->is_string()) fail(lineOf(*node), fmt::format("`{}` must be a string", key));
     return std::string(*node->value<std::string>());
+  }
+
+  // `oracle = "name"`, `"derived"`, `["name", "derived"]`, or nothing (derived).
+  void oracles(const toml::table& root, Manifest& m) const {
+    const toml::node* node = root.get("oracle");
+    if (!node) {
+      m.derivedOracle = true;
+      return;
+    }
+    m.oracleLine = lineOf(*node);
+    std::vector<std::string> names;
+    if (const auto* name = node->as_string()) {
+      names.push_back(name->get());
+    } else if (const toml::array* array = node->as_array(); array && !array->empty()) {
+      for (const toml::node& item : *array) {
+        if (!item.as_string()) break;
+        names.push_back(item.as_string()->get());
+      }
+      if (names.size() != array->size()) names.clear();
+    }
+    if (names.empty() || names.size() > 2)
+      fail(m.oracleLine,
+           "`oracle` must be a hand-written oracle's name, \"derived\", or both as an array "
+           "([\"name\", \"derived\"]); leave it out for the derived oracle alone");
+    for (const std::string& name : names) {
+      if (name == "derived") {
+        m.derivedOracle = true;
+      } else if (m.oracle.empty()) {
+        m.oracle = name;
+      } else {
+        fail(m.oracleLine, fmt::format("`oracle` names two hand-written oracles ('{}', '{}'): "
+                                       "keep one, and \"derived\" beside it if wanted",
+                                       m.oracle, name));
+      }
+    }
   }
 
   std::string optionalString(const toml::table& table, std::string_view key) const {
@@ -50,7 +86,8 @@ class ManifestReader {
   const toml::table& requiredTable(const toml::table& table, std::string_view key,
                                    int tableLine) const {
     const toml::node* node = table.get(key);
-    if (!node) fail(tableLine, fmt::format("missing table `{}`; add it (see shaders/README.md)", key));
+    if (!node)
+      fail(tableLine, fmt::format("missing table `{}`; add it (see shaders/README.md)", key));
     if (!node->is_table()) fail(lineOf(*node), fmt::format("`{}` must be a table", key));
     return *node->as_table();
   }
@@ -67,7 +104,9 @@ class ManifestReader {
     return out;
   }
 
-  static bool numeric(const toml::node& node) { return node.is_floating_point() || node.is_integer(); }
+  static bool numeric(const toml::node& node) {
+    return node.is_floating_point() || node.is_integer();
+  }
 
   // A literal: a number, an array of 2-4 numbers (a vector), or
   // { type = "mat3", value = [...] } for the cases a length cannot tell.
@@ -85,7 +124,8 @@ class ManifestReader {
                              [&](const auto& entry) { return typeName == entry.first; });
       if (it == std::end(kTypes))
         fail(lineOf(node), fmt::format("`{}`: unknown type `{}`; use float, vec2, vec3, vec4, "
-                                       "mat3 or mat4", name, typeName));
+                                       "mat3 or mat4",
+                                       name, typeName));
       type = it->second;
       const toml::node* value = typed->get("value");
       if (!value) fail(lineOf(node), fmt::format("`{}`: missing `value`", name));
@@ -93,13 +133,15 @@ class ManifestReader {
       if (!array) fail(lineOf(*value), fmt::format("`{}`: `value` must be an array", name));
     } else if ((array = node.as_array())) {
       if (array->size() < 2 || array->size() > 4)
-        fail(lineOf(node), fmt::format("`{}`: a vector literal has 2 to 4 numbers, this one has {}; "
-                                       "write a matrix as {{ type = \"mat4\", value = [...] }}",
-                                       name, array->size()));
+        fail(lineOf(node),
+             fmt::format("`{}`: a vector literal has 2 to 4 numbers, this one has {}; "
+                         "write a matrix as {{ type = \"mat4\", value = [...] }}",
+                         name, array->size()));
       type = static_cast<ValueType>(static_cast<int>(ValueType::Vec2) + array->size() - 2);
     } else {
       fail(lineOf(node), fmt::format("`{}` must be \"scene.<semantic>\", a number, an array or "
-                                     "{{ type = ..., value = [...] }}", name));
+                                     "{{ type = ..., value = [...] }}",
+                                     name));
     }
     Value out{type, {}};
     if (static_cast<int>(array->size()) != componentCount(type))
@@ -128,9 +170,11 @@ class ManifestReader {
           continue;
         }
         if (text.rfind("scene.", 0) != 0)
-          fail(binding.line, fmt::format("`{}` = \"{}\": a binding string names a scene semantic "
-                                         "and starts with \"scene.\" (or is \"default\" for the API's "
-                                         "initial value)", binding.name, text));
+          fail(binding.line,
+               fmt::format("`{}` = \"{}\": a binding string names a scene semantic "
+                           "and starts with \"scene.\" (or is \"default\" for the API's "
+                           "initial value)",
+                           binding.name, text));
         binding.source = text.substr(6);
       } else {
         binding.source = literal(value, binding.name);
@@ -141,10 +185,12 @@ class ManifestReader {
   }
 
   // fragment = [ { name = "refractview", type = "vec3", line = 12 }, ... ]
-  std::vector<FragmentCapture> fragmentCaptures(const toml::node& node, bool noFragmentStage) const {
+  std::vector<FragmentCapture> fragmentCaptures(const toml::node& node,
+                                                bool noFragmentStage) const {
     const toml::array* array = node.as_array();
     if (!array || !array->is_array_of_tables())
-      fail(lineOf(node), "`capture.fragment` must be an array of { name = ..., type = ..., line = ... }");
+      fail(lineOf(node),
+           "`capture.fragment` must be an array of { name = ..., type = ..., line = ... }");
     if (noFragmentStage)
       fail(lineOf(node), "`capture.fragment` needs a fragment stage; add `fragment` to `stages`");
     std::vector<FragmentCapture> out;
@@ -155,17 +201,23 @@ class ManifestReader {
       capture.manifestLine = lineOf(element);
       capture.name = requiredString(table, "name", capture.manifestLine);
       const std::string type = requiredString(table, "type", capture.manifestLine);
-      if (type == "float") capture.type = ValueType::Float;
-      else if (type == "vec2") capture.type = ValueType::Vec2;
-      else if (type == "vec3") capture.type = ValueType::Vec3;
-      else fail(capture.manifestLine,
-                fmt::format("capture `{}`: type `{}` cannot be read back; use float, vec2 or vec3 "
-                            "(the fourth channel marks the pixels that wrote it)", capture.name, type));
+      if (type == "float")
+        capture.type = ValueType::Float;
+      else if (type == "vec2")
+        capture.type = ValueType::Vec2;
+      else if (type == "vec3")
+        capture.type = ValueType::Vec3;
+      else
+        fail(capture.manifestLine,
+             fmt::format("capture `{}`: type `{}` cannot be read back; use float, vec2 or vec3 "
+                         "(the fourth channel marks the pixels that wrote it)",
+                         capture.name, type));
       const toml::node* line = table.get("line");
       if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
         fail(capture.manifestLine,
              fmt::format("capture `{}`: `line` must be the fragment file's line (from 1) whose "
-                         "statement computes it", capture.name));
+                         "statement computes it",
+                         capture.name));
       capture.line = static_cast<int>(*line->value<std::int64_t>());
       for (const FragmentCapture& earlier : out)
         if (earlier.name == capture.name)
@@ -174,7 +226,8 @@ class ManifestReader {
     }
     if (out.size() > 7)
       fail(lineOf(node), fmt::format("`capture.fragment` lists {} values; at most 7 fit beside "
-                                     "the listing's own colour output", out.size()));
+                                     "the listing's own colour output",
+                                     out.size()));
     return out;
   }
 
@@ -185,31 +238,34 @@ class ManifestReader {
     const toml::node* node = root.get("compile_error");
     if (!node) {
       if (m.expect == Expectation::CompileError)
-        fail(1, "`expect = \"compile-error\"` needs the expected diagnostic per API: "
-                "[compile_error.gl] and [compile_error.vk] with stage, line and (optionally) "
-                "pattern");
+        fail(1,
+             "`expect = \"compile-error\"` needs the expected diagnostic per API: "
+             "[compile_error.gl] and [compile_error.vk] with stage, line and (optionally) "
+             "pattern");
       return out;
     }
     if (m.expect != Expectation::CompileError)
-      fail(lineOf(*node), "`compile_error` is only for a listing with `expect = \"compile-error\"`");
+      fail(lineOf(*node),
+           "`compile_error` is only for a listing with `expect = \"compile-error\"`");
     const toml::table* table = node->as_table();
     if (!table) fail(lineOf(*node), "`compile_error` must be a table: [compile_error.gl] ...");
     onlyKeys(*table, {"gl", "vk"}, "`compile_error` (one table per API)");
     for (const auto& [api, value] : *table) {
       const toml::table* entry = value.as_table();
-      if (!entry)
-        fail(lineOf(value), fmt::format("`compile_error.{}` must be a table", api.str()));
+      if (!entry) fail(lineOf(value), fmt::format("`compile_error.{}` must be a table", api.str()));
       onlyKeys(*entry, {"stage", "line", "pattern"}, fmt::format("`compile_error.{}`", api.str()));
       ExpectedDiagnostic d;
       d.manifestLine = lineOf(value);
       d.stage = requiredString(*entry, "stage", d.manifestLine);
       if (d.stage != "vertex" && d.stage != "fragment")
         fail(d.manifestLine, fmt::format("`compile_error.{}.stage` must be \"vertex\" or "
-                                         "\"fragment\"", api.str()));
+                                         "\"fragment\"",
+                                         api.str()));
       const toml::node* line = entry->get("line");
       if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
         fail(d.manifestLine, fmt::format("`compile_error.{}.line` must be the line (from 1) the "
-                                         "diagnostic points at", api.str()));
+                                         "diagnostic points at",
+                                         api.str()));
       d.line = static_cast<int>(*line->value<std::int64_t>());
       d.pattern = optionalString(*entry, "pattern");
       out[std::string(api.str())] = d;
@@ -217,7 +273,8 @@ class ManifestReader {
     for (const char* api : {"gl", "vk"})
       if (!out.count(api) && !m.notSupported.count(api))
         fail(lineOf(*node), fmt::format("`compile_error` has no `{}` entry: name the diagnostic "
-                                        "that API's compiler gives", api));
+                                        "that API's compiler gives",
+                                        api));
     return out;
   }
 
@@ -225,8 +282,9 @@ class ManifestReader {
   ImageTolerance imageTolerance(const toml::table& caseTable, int caseLine) const {
     const toml::node* node = caseTable.get("image");
     if (!node || !node->is_table())
-      fail(caseLine, "the \"image\" check needs `image = { fail = ..., warn = ..., failpercent = "
-                     "..., hardfail = ... }` with the derivation in a comment");
+      fail(caseLine,
+           "the \"image\" check needs `image = { fail = ..., warn = ..., failpercent = "
+           "..., hardfail = ... }` with the derivation in a comment");
     const toml::table& table = *node->as_table();
     onlyKeys(table, {"fail", "warn", "failpercent", "hardfail"}, "`image`");
     auto number = [&](std::string_view key) {
@@ -250,9 +308,10 @@ class ManifestReader {
       fail(static_cast<int>(error.source().begin.line),
            fmt::format("not valid TOML: {}", error.description()));
     }
-    onlyKeys(root, {"id", "title", "source", "profile", "stages", "oracle", "constants", "timeout",
-                    "inputs", "uniforms", "capture", "expect", "compile_error", "max_undefined",
-                    "not_supported", "case"},
+    onlyKeys(root,
+             {"id", "title", "source", "profile", "stages", "oracle", "constants", "timeout",
+              "inputs", "uniforms", "capture", "expect", "compile_error", "max_undefined",
+              "not_supported", "case"},
              "the manifest");
     Manifest m;
     m.path = path_;
@@ -264,16 +323,19 @@ class ManifestReader {
     m.source.where = requiredString(source, "where", lineOf(source));
 
     const std::string profile = optionalString(root, "profile");
-    if (profile.empty() || profile == "core") m.profile = Profile::Core;
-    else if (profile == "compatibility") m.profile = Profile::Compatibility;
-    else fail(lineOf(*root.get("profile")), fmt::format("profile `{}`: use core or compatibility", profile));
+    if (profile.empty() || profile == "core")
+      m.profile = Profile::Core;
+    else if (profile == "compatibility")
+      m.profile = Profile::Compatibility;
+    else
+      fail(lineOf(*root.get("profile")),
+           fmt::format("profile `{}`: use core or compatibility", profile));
 
     const toml::table& stages = requiredTable(root, "stages", 1);
     onlyKeys(stages, {"vertex", "fragment"}, "`stages`");
     m.vertexFile = requiredString(stages, "vertex", lineOf(stages));
     m.fragmentFile = optionalString(stages, "fragment");
-    m.oracle = requiredString(root, "oracle", 1);
-    m.oracleLine = lineOf(*root.get("oracle"));
+    oracles(root, m);
 
     if (const toml::node* constants = root.get("constants")) {
       const toml::table* table = constants->as_table();
@@ -295,36 +357,44 @@ class ManifestReader {
     const toml::table& capture = requiredTable(root, "capture", 1);
     onlyKeys(capture, {"vertex", "fragment"}, "`capture`");
     m.captureLine = lineOf(capture);
-    if (const toml::node* vertex = capture.get("vertex")) m.captureVertex = stringArray(*vertex, "capture.vertex");
+    if (const toml::node* vertex = capture.get("vertex"))
+      m.captureVertex = stringArray(*vertex, "capture.vertex");
     if (const toml::node* fragment = capture.get("fragment"))
       m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
     if (!m.captureVertex.empty() && !m.captureFragment.empty())
-      fail(lineOf(capture), "`capture` lists both vertex outputs and fragment values; a listing "
-                            "is checked at one stage: keep the one its oracle mirrors");
+      fail(lineOf(capture),
+           "`capture` lists both vertex outputs and fragment values; a listing "
+           "is checked at one stage: keep the one its oracle mirrors");
     if (m.captureVertex.empty() && m.captureFragment.empty())
-      fail(lineOf(capture), "`capture` names nothing to read back; list outputs in "
-                            "`capture.vertex` or values in `capture.fragment`");
+      fail(lineOf(capture),
+           "`capture` names nothing to read back; list outputs in "
+           "`capture.vertex` or values in `capture.fragment`");
 
     const std::string expect = optionalString(root, "expect");
-    if (expect.empty() || expect == "pass") m.expect = Expectation::Pass;
-    else if (expect == "compile-error") m.expect = Expectation::CompileError;
-    else fail(lineOf(*root.get("expect")),
-              fmt::format("expect `{}`: use \"pass\" or \"compile-error\"", expect));
+    if (expect.empty() || expect == "pass")
+      m.expect = Expectation::Pass;
+    else if (expect == "compile-error")
+      m.expect = Expectation::CompileError;
+    else
+      fail(lineOf(*root.get("expect")),
+           fmt::format("expect `{}`: use \"pass\" or \"compile-error\"", expect));
     if (const toml::node* undefined = root.get("max_undefined")) {
-      if (!numeric(*undefined) || *undefined->value<double>() < 0 || *undefined->value<double>() > 1)
+      if (!numeric(*undefined) || *undefined->value<double>() < 0 ||
+          *undefined->value<double>() > 1)
         fail(lineOf(*undefined), "`max_undefined` must be a fraction from 0 to 1 (0.01 is 1 %)");
       m.maxUndefinedFraction = *undefined->value<double>();
     }
     if (const toml::node* unsupported = root.get("not_supported")) {
       const toml::table* table = unsupported->as_table();
-      if (!table) fail(lineOf(*unsupported), "`not_supported` must be a table: { vk = \"reason\" }");
+      if (!table)
+        fail(lineOf(*unsupported), "`not_supported` must be a table: { vk = \"reason\" }");
       for (const auto& [backend, reason] : *table) {
         if (backend.str() != "gl" && backend.str() != "vk")
-          fail(lineOf(reason), fmt::format("not_supported: unknown backend `{}`; use gl or vk",
-                                           backend.str()));
+          fail(lineOf(reason),
+               fmt::format("not_supported: unknown backend `{}`; use gl or vk", backend.str()));
         if (!reason.is_string() || reason.value<std::string>()->empty())
-          fail(lineOf(reason), fmt::format("not_supported.{} must give the reason as a string",
-                                           backend.str()));
+          fail(lineOf(reason),
+               fmt::format("not_supported.{} must give the reason as a string", backend.str()));
         m.notSupported[std::string(backend.str())] = *reason.value<std::string>();
       }
     }
@@ -342,8 +412,10 @@ class ManifestReader {
       spec.line = lineOf(node);
       spec.scene = requiredString(table, "scene", spec.line);
       spec.line = lineOf(*table.get("scene"));  // point messages at the scene, not the header
-      if (const toml::node* checks = table.get("checks")) spec.checks = stringArray(*checks, "checks");
-      else spec.checks = {"vectors"};
+      if (const toml::node* checks = table.get("checks"))
+        spec.checks = stringArray(*checks, "checks");
+      else
+        spec.checks = {"vectors"};
       // Which names are known is the runner's registry (runner/checks/):
       // case validation says, before any driver loads.
       if (spec.has("image")) spec.image = imageTolerance(table, spec.line);

@@ -77,7 +77,12 @@ struct Manifest {
   Profile profile = Profile::Core;
   std::string vertexFile;      // relative to the manifest's folder
   std::string fragmentFile;
-  std::string oracle;
+  // `oracle`: the hand-written oracle that mirrors the listing line by line
+  // (its intent: an edited shader fails against it), "derived" for the one
+  // built from the listing's own text (the spec: a driver outside it fails,
+  // whatever the shader says), or both as an array. Absent means derived.
+  std::string oracle;          // the hand-written oracle's name; empty when none
+  bool derivedOracle = false;  // the derived oracle gates the listing too
   int oracleLine = 0;
   ConstantMap constants;
   std::vector<Binding> inputs;

@@ -17,7 +17,8 @@ class ManifestTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("snell-manifest-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("snell-manifest-" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / "a.vert") << "#version 140\nvoid main() {}\n";
@@ -28,6 +29,14 @@ class ManifestTest : public ::testing::Test {
     const fs::path path = dir_ / "manifest.toml";
     std::ofstream(path) << text;
     return path;
+  }
+
+  // kValid with its `oracle = ...` line replaced by `line` (empty: no oracle).
+  static std::string withOracleLine(const std::string& line) {
+    std::string text = kValid;
+    const std::size_t at = text.find("oracle =");
+    text.replace(at, text.find('\n', at) - at, line);
+    return text;
   }
 
   // Loads and returns the error message, failing the test if none is thrown.
@@ -87,10 +96,40 @@ TEST_F(ManifestTest, ReadsEveryField) {
 
 TEST_F(ManifestTest, MissingFieldNamesFileAndField) {
   std::string text = kValid;
-  text.erase(text.find("oracle ="), text.find('\n', text.find("oracle =")) + 1 - text.find("oracle ="));
+  text.erase(text.find("title ="),
+             text.find('\n', text.find("title =")) + 1 - text.find("title ="));
   const std::string message = errorOf(text);
   EXPECT_NE(message.find("manifest.toml:1:"), std::string::npos) << message;
-  EXPECT_NE(message.find("`oracle`"), std::string::npos) << message;
+  EXPECT_NE(message.find("`title`"), std::string::npos) << message;
+}
+
+TEST_F(ManifestTest, NoOracleMeansTheDerivedOracle) {
+  const Manifest m = loadManifest(write(withOracleLine("")));
+  EXPECT_TRUE(m.derivedOracle);
+  EXPECT_EQ(m.oracle, "");
+  const Manifest named = loadManifest(write(withOracleLine("oracle = \"derived\"")));
+  EXPECT_TRUE(named.derivedOracle);
+  EXPECT_EQ(named.oracle, "");
+}
+
+TEST_F(ManifestTest, AManifestMayNameBothOracles) {
+  const Manifest both =
+      loadManifest(write(withOracleLine("oracle = [\"orange_book_fresnel\", \"derived\"]")));
+  EXPECT_TRUE(both.derivedOracle);
+  EXPECT_EQ(both.oracle, "orange_book_fresnel");
+  const Manifest handWritten =
+      loadManifest(write(withOracleLine("oracle = \"orange_book_fresnel\"")));
+  EXPECT_FALSE(handWritten.derivedOracle);
+  EXPECT_EQ(handWritten.oracle, "orange_book_fresnel");
+}
+
+TEST_F(ManifestTest, AnOracleFieldOfTheWrongShapeNamesItsLine) {
+  for (const char* bad : {"oracle = 3", "oracle = []", "oracle = [\"a\", \"b\"]",
+                          "oracle = [\"a\", 3]", "oracle = [\"a\", \"derived\", \"c\"]"}) {
+    const std::string message = errorOf(withOracleLine(bad));
+    EXPECT_NE(message.find("manifest.toml:5:"), std::string::npos) << bad << ": " << message;
+    EXPECT_NE(message.find("`oracle`"), std::string::npos) << bad << ": " << message;
+  }
 }
 
 TEST_F(ManifestTest, WrongTypeNamesTheLine) {
@@ -133,7 +172,8 @@ TEST_F(ManifestTest, UnknownSemanticNamesTheLineAndTheScene) {
     resolveBindings(m, makeScene("sphere"));
     FAIL() << "no error";
   } catch (const UsageError& error) {
-    EXPECT_NE(std::string(error.what()).find("manifest.toml:10:"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("manifest.toml:10:"), std::string::npos)
+        << error.what();
     EXPECT_NE(std::string(error.what()).find("scene.nonsense"), std::string::npos);
   }
 }
