@@ -7,6 +7,7 @@
 #include "core/case.h"
 #include "core/status.h"
 #include "runner/case_validation.h"
+#include "runner/listing_oracles.h"
 
 namespace snell::cli {
 
@@ -42,7 +43,7 @@ Command addListCommand(CLI::App& app) {
                  fmt::format("{}", fmt::join(backends, ",")),
                  statusName(m.expect == Expectation::CompileError ? Status::ExpectedCompileError
                                                                   : Status::Pass),
-                 stage, fmt::format("{}", fmt::join(c.spec.checks, ",")), m.oracle, m.source.file,
+                 stage, fmt::format("{}", fmt::join(c.spec.checks, ",")), oracleLabel(m), m.source.file,
                  m.source.where);
     }
     std::set<const Manifest*> listings;

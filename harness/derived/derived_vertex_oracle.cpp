@@ -39,4 +39,9 @@ std::unique_ptr<VertexOracle> makeDerivedVertexOracle(const ShaderSource& source
   return std::make_unique<DerivedVertexOracle>(lowerShader(source, outputs));
 }
 
+std::unique_ptr<VertexOracle> makeDerivedVectorOracle(const ShaderSource& source,
+                                                      const std::vector<OutputRequest>& outputs) {
+  return std::make_unique<DerivedVertexOracle>(lowerShader(source, outputs));
+}
+
 }  // namespace snell::derived

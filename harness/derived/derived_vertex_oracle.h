@@ -17,5 +17,10 @@ namespace snell::derived {
 // construct and its line) or does not compute a requested output.
 std::unique_ptr<VertexOracle> makeDerivedVertexOracle(const ShaderSource& source,
                                                       const std::vector<std::string>& outputs = {});
+// The same for any stage's captured values, each where it is captured: a
+// fragment stage's oracle reads its `in` variables as inputs (the values
+// read back at the probes) and computes the requested locals.
+std::unique_ptr<VertexOracle> makeDerivedVectorOracle(const ShaderSource& source,
+                                                      const std::vector<OutputRequest>& outputs);
 
 }  // namespace snell::derived

@@ -6,13 +6,16 @@
 #include <array>
 #include <concepts>
 #include <map>
+#include <cmath>
 #include <span>
+#include <stdexcept>
 
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
 #include "oracle/branch_paths.h"
 #include "derived/sample_ways.h"
 #include "oracle/glsl/glsl.h"
+#include "oracle/glsl/texture.h"
 #include "oracle/interval.h"
 #include "oracle/interval_builtins.h"
 
@@ -304,6 +307,16 @@ class Evaluation {
           return select(op, s, op.args[0], arg(op, 1, s), arg(op, 2, s));
         });
         break;
+      case OpCode::TextureCube:
+      case OpCode::Texture2D:
+      case OpCode::Inverse:
+        if constexpr (std::same_as<T, double>) {
+          referenceOnlyOp(op);
+        } else {
+          throw std::logic_error(fmt::format("{}:{}: {} reached a gated evaluation", program_.file,
+                                             op.line, opCodeName(op.code)));
+        }
+        break;
       case OpCode::SumOfProducts:
       case OpCode::Dot:
       case OpCode::Length:
@@ -326,6 +339,92 @@ class Evaluation {
         }
         break;
     }
+  }
+
+  // The reference image's lookups and inverse(), in double (the gates
+  // never evaluate them, see lower_glsl.h).
+  void referenceOnlyOp(const Op& op) {
+    if (op.code == OpCode::Inverse) {
+      const auto n = static_cast<std::size_t>(op.width);
+      const std::size_t samples = samplesOf(op);
+      for (std::size_t k = 0; k < n * n; ++k)
+        numbers_[static_cast<std::size_t>(op.result) + k].resize(samples);
+      std::vector<double> m(n * n);
+      for (std::size_t s = 0; s < samples; ++s) {
+        for (std::size_t k = 0; k < n * n; ++k) m[k] = arg(op, static_cast<int>(k), s);
+        const std::vector<double> inverse = inverted(m, n);
+        for (std::size_t k = 0; k < n * n; ++k)
+          numbers_[static_cast<std::size_t>(op.result) + k][s] = inverse[k];
+      }
+      return;
+    }
+    if (!textures_)
+      throw std::logic_error(fmt::format("{}:{}: a lookup with no textures bound", program_.file,
+                                         op.line));
+    const bool cube = op.code == OpCode::TextureCube;
+    glsl::samplerCube cubeSampler;
+    glsl::sampler2D sampler2D;
+    if (cube) {
+      cubeSampler.map = textures_->cubeMaps.at(op.name);
+    } else {
+      sampler2D.image = textures_->textures2D.at(op.name);
+    }
+    eachVector<4>(op, [&](std::size_t s) {
+      if (cube) {
+        cubeSampler.undefinedLookup = cubeSampler.faceEdgeLookup = false;
+        const glsl::vec4<double> color = glsl::texture(cubeSampler, vector<3>(op, 0, s));
+        noteLookup(op, s, cubeSampler.undefinedLookup, cubeSampler.faceEdgeLookup);
+        return color;
+      }
+      sampler2D.undefinedLookup = false;
+      const glsl::vec4<double> color = glsl::texture(sampler2D, vector<2>(op, 0, s));
+      noteLookup(op, s, sampler2D.undefinedLookup, false);
+      return color;
+    });
+  }
+
+  void noteLookup(const Op& op, std::size_t sample, bool undefined, bool faceEdge) {
+    if (!findings_) return;
+    const std::size_t first = op.perSample ? sample : 0;
+    const std::size_t last = op.perSample ? sample + 1 : sampleCount_;
+    for (std::size_t s = first; s < last; ++s) {
+      findings_->undefined[s] = findings_->undefined[s] || undefined;
+      findings_->faceEdge[s] = findings_->faceEdge[s] || faceEdge;
+    }
+  }
+
+  // Gauss-Jordan elimination with partial pivoting of a column-major n x n
+  // matrix; a singular one gives NaN (GLSL leaves its inverse undefined).
+  static std::vector<double> inverted(std::vector<double> m, std::size_t n) {
+    const auto at = [n](std::vector<double>& a, std::size_t row, std::size_t column) -> double& {
+      return a[column * n + row];
+    };
+    std::vector<double> inverse(n * n, 0.0);
+    for (std::size_t k = 0; k < n; ++k) at(inverse, k, k) = 1.0;
+    for (std::size_t column = 0; column < n; ++column) {
+      std::size_t pivot = column;
+      for (std::size_t row = column + 1; row < n; ++row)
+        if (std::abs(at(m, row, column)) > std::abs(at(m, pivot, column))) pivot = row;
+      const double p = at(m, pivot, column);
+      if (p == 0.0 || !std::isfinite(p)) return std::vector<double>(n * n, glsl::lit<double>(NAN));
+      for (std::size_t c = 0; c < n; ++c) {
+        std::swap(at(m, column, c), at(m, pivot, c));
+        std::swap(at(inverse, column, c), at(inverse, pivot, c));
+      }
+      for (std::size_t c = 0; c < n; ++c) {
+        at(m, column, c) /= p;
+        at(inverse, column, c) /= p;
+      }
+      for (std::size_t row = 0; row < n; ++row) {
+        if (row == column) continue;
+        const double factor = at(m, row, column);
+        for (std::size_t c = 0; c < n; ++c) {
+          at(m, row, c) -= factor * at(m, column, c);
+          at(inverse, row, c) -= factor * at(inverse, column, c);
+        }
+      }
+    }
+    return inverse;
   }
 
   // GLSL's `condition ? then : otherwise` (and float(bool), 1.0 or 0.0).
@@ -389,6 +488,9 @@ class Evaluation {
   // Set by the caller: a flag per sample, raised where a branch may go
   // either way.
   std::vector<std::uint8_t>* undecided_ = nullptr;
+  // The reference image's textures and what its lookups ran into.
+  const FragmentBindings* textures_ = nullptr;
+  LookupFindings* findings_ = nullptr;
 };
 
 }  // namespace
@@ -444,15 +546,32 @@ template std::vector<std::vector<Interval>> evaluateProgram<Interval>(const Prog
                                                                       std::size_t,
                                                                       std::vector<std::uint8_t>*);
 
+UniformMap withLegacyState(const Program& program, const UniformMap& bound) {
+  const bool legacy = std::any_of(program.uniforms.begin(), program.uniforms.end(),
+                                  [](const Binding& b) { return b.name.rfind("gl_", 0) == 0; });
+  return legacy ? withDerivedLegacyState(bound) : bound;
+}
+
+std::vector<std::vector<double>> evaluateReference(const Program& program,
+                                                   const UniformMap& uniforms,
+                                                   const AttributeMap& inputs,
+                                                   std::size_t sampleCount,
+                                                   const FragmentBindings* textures,
+                                                   LookupFindings* findings) {
+  Evaluation<double> evaluation(program, uniforms, inputs, sampleCount);
+  evaluation.textures_ = textures;
+  if (findings) {
+    findings->undefined.assign(sampleCount, 0);
+    findings->faceEdge.assign(sampleCount, 0);
+  }
+  evaluation.findings_ = findings;
+  return evaluation.run();
+}
+
 std::vector<OracleVarying> evaluateVaryings(const Program& program, const UniformMap& bound,
                                             const AttributeMap& inputs, std::size_t sampleCount,
                                             PrecisionRules rules) {
-  // A legacy listing reads GL's derived state (gl_NormalMatrix, ...), which
-  // the state table computes from the bound matrices, as GL does.
-  const bool legacy = std::any_of(program.uniforms.begin(), program.uniforms.end(),
-                                  [](const Binding& b) { return b.name.rfind("gl_", 0) == 0; });
-  const UniformMap state = legacy ? withDerivedLegacyState(bound) : UniformMap{};
-  const UniformMap& uniforms = legacy ? state : bound;
+  const UniformMap uniforms = withLegacyState(program, bound);
   checkBindings(program, uniforms, inputs, sampleCount);
   const UsePrecisionRules active(rules);
   const auto references = evaluateProgram<double>(program, uniforms, inputs, sampleCount);

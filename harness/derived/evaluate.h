@@ -20,6 +20,7 @@
 #include "core/values.h"
 #include "derived/ir.h"
 #include "oracle/precision_rules.h"
+#include "oracle/reference/fragment_oracle.h"
 
 namespace snell::derived {
 
@@ -38,6 +39,28 @@ template <class T>
 std::vector<std::vector<T>> evaluateProgram(const Program& program, const UniformMap& uniforms,
                                             const AttributeMap& inputs, std::size_t sampleCount,
                                             std::vector<std::uint8_t>* undecided = nullptr);
+
+// The bound uniforms, with GL's derived state (gl_NormalMatrix, ...) that a
+// legacy program reads, computed from the bound matrices as GL does.
+UniformMap withLegacyState(const Program& program, const UniformMap& bound);
+
+// What a reference evaluation's lookups ran into, a flag per sample: a
+// direction or coordinate the spec leaves undefined, a cube lookup on a face
+// edge (oracle/glsl/texture.h).
+struct LookupFindings {
+  std::vector<std::uint8_t> undefined;
+  std::vector<std::uint8_t> faceEdge;
+};
+
+// The reference image's evaluation of a LowerOptions::doubleOnly program:
+// double only, the lookups sampling `textures` (may be null when the
+// program has none). Expects checked bindings.
+std::vector<std::vector<double>> evaluateReference(const Program& program,
+                                                   const UniformMap& uniforms,
+                                                   const AttributeMap& inputs,
+                                                   std::size_t sampleCount,
+                                                   const FragmentBindings* textures,
+                                                   LookupFindings* findings);
 
 // The three number types together, as a listing oracle reports them, under
 // `rules`. Checks the bindings first. A program that reads legacy

@@ -47,6 +47,11 @@ enum class OpCode : std::uint8_t {
   // cond, then, otherwise: GLSL's if/else and ?: on a value both ways
   // compute; where the condition may go either way, the hull of both.
   Select,
+  // The reference image's operations, evaluated in double only (the lowering
+  // refuses them in a gated value, see lower_glsl.h):
+  TextureCube,  // sampler `name`, direction args[0..3): 4 results
+  Texture2D,    // sampler `name`, coordinates args[0..2): 4 results
+  Inverse,      // a width x width matrix, column-major: width * width results
 };
 
 const char* opCodeName(OpCode code);
@@ -77,6 +82,7 @@ struct Binding {
   std::string name;
   int components = 1;
   int line = 0;
+  int columns = 1;  // a matrix's columns (components / columns rows)
 };
 
 struct Program {
@@ -86,6 +92,9 @@ struct Program {
   std::vector<Variable> outputs;
   std::vector<Binding> uniforms;
   std::vector<Binding> inputs;
+  // The samplers the program's lookups read, by GLSL name.
+  std::vector<std::string> samplersCube;
+  std::vector<std::string> samplers2D;
 };
 
 }  // namespace snell::derived

@@ -58,12 +58,13 @@ Key memberKey(const TIntermSymbol& block, int member) {
 
 class Lowering {
  public:
-  Lowering(const ShaderSource& source, TIntermNode* root)
-      : source_(source), builder_(source.file, source.text) {
+  Lowering(const ShaderSource& source, TIntermNode* root, LowerOptions options)
+      : source_(source), builder_(source.file, source.text), options_(options) {
     collectFunctions(root);
   }
 
-  Program run(const std::vector<std::string>& requested) {
+  Program run(const std::vector<OutputRequest>& requested) {
+    requests_ = requested;
     TIntermAggregate* root = nullptr;
     for (auto& [name, function] : functions_)
       if (name == "main(") root = function;
@@ -72,10 +73,25 @@ class Lowering {
     inMain_ = true;
     functionBody(*root, /*allowReturnValue=*/false);
     std::vector<Variable> outputs;
-    std::vector<std::string> names = requested;
+    std::vector<std::string> names;
+    for (const OutputRequest& request : requested) names.push_back(request.name);
     if (names.empty()) names = writtenOutputs_;
     for (const std::string& name : names) outputs.push_back(output(name));
     return builder_.finish(std::move(outputs));
+  }
+
+  // Keeps the value of each output requested after a line before main()
+  // goes past that line (a statement starting on a later line).
+  void snapshotBefore(int line) {
+    if (!inMain_ || !callStack_.empty() || line <= 0) return;
+    for (const OutputRequest& request : requests_) {
+      if (request.afterLine <= 0 || request.afterLine >= line || snapshots_.count(request.name))
+        continue;
+      const auto key = names_.find(request.name);
+      if (key == names_.end()) continue;
+      const auto value = variables_.find(key->second);
+      if (value != variables_.end()) snapshots_[request.name] = value->second;
+    }
   }
 
  private:
@@ -108,6 +124,7 @@ class Lowering {
         return;
       }
     }
+    snapshotBefore(node->getLoc().line);
     if (glslang::TIntermLoop* loop = node->getAsLoopNode()) {
       unrolled(*loop);
       return;
@@ -401,9 +418,9 @@ class Lowering {
     Value value{shape, {}, {}};
     if (shape.kind == Kind::Opaque) {
       value.refusal =
-          builder_.unsupported(fmt::format("the sampler {} (no texture lookups yet)", name), line);
+          builder_.unsupported(fmt::format("the sampler {} outside texture()", name), line);
     } else if (storage == glslang::EvqUniform) {
-      value.regs = builder_.uniform(name, shape.size(), line);
+      value.regs = builder_.uniform(name, shape.size(), line, shape.columns);
     } else if (storage == glslang::EvqVaryingIn) {
       value.regs = builder_.input(name, shape.size(), line);
     } else {
@@ -425,7 +442,7 @@ class Lowering {
     } else if (legacy->kind == LegacyBuiltinKind::Attribute) {
       value.regs = builder_.input(name, shape.size(), line);
     } else {
-      value.regs = builder_.uniform(name, shape.size(), line);
+      value.regs = builder_.uniform(name, shape.size(), line, shape.columns);
     }
     return value;
   }
@@ -610,8 +627,41 @@ class Lowering {
           {builder_.literal(static_cast<double>(compileTimeInt(*node.getOperand())), false)},
           {}};
     const Value operand = expression(*node.getOperand());
+    if (node.getOp() == glslang::EOpTranspose) return transposed(operand, shapeOf(node));
+    if (node.getOp() == glslang::EOpMatrixInverse) {
+      if (options_.doubleOnly) return builder_.inverse(operand, line);
+      Value value{shapeOf(node), {}, {}};
+      value.refusal = builder_.unsupported(
+          "inverse(), to which GLSL 4.60 section 4.7.1 gives no precision, in a gated value", line);
+      return value;
+    }
     return builder_.unary(node.getOp(), operand, shapeOf(node), line,
                           [&](const std::string& what) { refuse(node, what); });
+  }
+
+  // transpose(m): the same registers in the other order; exact.
+  static Value transposed(const Value& matrix, Shape result) {
+    Value value{result, {}, matrix.refusal};
+    if (!matrix.refusal.empty()) return value;
+    for (int c = 0; c < result.columns; ++c)
+      for (int r = 0; r < result.rows; ++r)
+        value.regs.push_back(matrix.regs[static_cast<std::size_t>(r * matrix.shape.rows + c)]);
+    return value;
+  }
+
+  // texture(sampler, P) in the reference image's program: a uniform
+  // samplerCube or sampler2D and its coordinates, nothing else.
+  Value followedLookup(TIntermAggregate& node, int line) {
+    const glslang::TIntermSequence& args = node.getSequence();
+    TIntermSymbol* sampler = args.empty() ? nullptr : args[0]->getAsSymbolNode();
+    if (node.getOp() != glslang::EOpTexture || args.size() != 2 || !sampler)
+      refuse(node, "this texture function (texture(sampler, P) is followed)");
+    const glslang::TSampler& type = sampler->getType().getSampler();
+    const bool cube = type.dim == glslang::EsdCube;
+    if ((!cube && type.dim != glslang::Esd2D) || type.isArrayed() || type.isShadow())
+      refuse(node, "a lookup in a sampler other than samplerCube or sampler2D");
+    const Value coordinates = expression(*args[1]->getAsTyped());
+    return builder_.lookup(sampler->getName().c_str(), cube, coordinates, line);
   }
 
   Value aggregateExpression(TIntermAggregate& node, int line) {
@@ -619,6 +669,7 @@ class Lowering {
     const auto refuseHere = [&](const std::string& what) { refuse(node, what); };
     std::vector<Value> args;
     const bool lookup = node.isTexture() || node.isSampling() || node.isImage();
+    if (lookup && options_.doubleOnly) return followedLookup(node, line);
     for (TIntermNode* child : node.getSequence()) {
       TIntermTyped* typed = child->getAsTyped();
       if (!typed) refuse(node, "this call");
@@ -690,7 +741,9 @@ class Lowering {
           "{}: the derived oracle was asked for '{}', which the shader's main() does not "
           "compute; name an output or a local of main()",
           source_.file, name));
-    const Value& value = variables_.at(key->second);
+    const auto snapshot = snapshots_.find(name);
+    const Value& value =
+        snapshot != snapshots_.end() ? snapshot->second : variables_.at(key->second);
     if (!value.refusal.empty())
       throw UsageError(fmt::format("{} (needed for '{}'); {}", value.refusal, name, kAdvice));
     if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
@@ -701,6 +754,9 @@ class Lowering {
 
   const ShaderSource& source_;
   ProgramBuilder builder_;
+  LowerOptions options_;
+  std::vector<OutputRequest> requests_;
+  std::map<std::string, Value> snapshots_;
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;
@@ -715,6 +771,13 @@ class Lowering {
 }  // namespace
 
 Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs) {
+  std::vector<OutputRequest> requests;
+  for (const std::string& name : outputs) requests.push_back({name, 0});
+  return lowerShader(source, requests);
+}
+
+Program lowerShader(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
+                    LowerOptions options) {
   ensureGlslangInitialised();
   const std::string text = withoutConstQualifiers(source.text);
   const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
@@ -729,7 +792,7 @@ Program lowerShader(const ShaderSource& source, const std::vector<std::string>& 
     throw UsageError(fmt::format(
         "{}: glslang cannot compile the shader for the derived oracle:\n{}", source.file, log));
   }
-  Lowering lowering(source, shader.getIntermediate()->getTreeRoot());
+  Lowering lowering(source, shader.getIntermediate()->getTreeRoot(), options);
   return lowering.run(outputs);
 }
 

@@ -15,9 +15,9 @@
 // the run-time and the folded values, as a hand-written oracle does.
 //
 // A construct outside the subset is refused with a UsageError naming it and
-// its line: loops, if/else, ?:, discard, int values, out parameters and
-// early returns at once; values that cannot be derived (a texture lookup,
-// a legacy built-in such as gl_ModelViewMatrix) only when a requested
+// its line: while loops, discard, switch, non-constant ints, out parameters
+// and early returns at once; values that cannot be derived (a texture lookup
+// in a gated program, a built-in such as gl_FragCoord) only when a requested
 // output depends on them.
 #include <string>
 #include <vector>
@@ -34,9 +34,29 @@ struct ShaderSource {
   Stage stage = Stage::Vertex;
 };
 
-// The program computing `outputs` (names of `out`/varying variables,
-// gl_Position, or locals of main(), at the end of main()); empty means every
-// output variable the shader writes. Operations no output needs are dropped.
+// A value the program computes: an `out`/varying variable, gl_Position,
+// gl_FragColor or a local of main(), as it stands after the statement on
+// `afterLine` of main() (a fragment capture's line), or at the end of main()
+// when 0.
+struct OutputRequest {
+  std::string name;
+  int afterLine = 0;
+};
+
+struct LowerOptions {
+  // The reference image's program, evaluated in double only: texture()
+  // lookups (samplerCube, sampler2D) and inverse() are followed. A gated
+  // program (false) refuses any requested value that depends on them: a
+  // lookup's result is a colour, which the image check gates, and GLSL 4.60
+  // section 4.7.1 gives inverse() no precision, so no interval bounds it.
+  bool doubleOnly = false;
+};
+
+// The program computing `outputs`; none means every output variable the
+// shader writes. Operations no output needs are dropped.
+Program lowerShader(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
+                    LowerOptions options = {});
+// The same, every name at the end of main().
 Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs = {});
 
 }  // namespace snell::derived

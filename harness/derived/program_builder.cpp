@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <iterator>
 #include <stdexcept>
 
 namespace snell::derived {
@@ -78,8 +79,9 @@ Reg ProgramBuilder::literal(double value, bool isBool) {
   return reg;
 }
 
-std::vector<Reg> ProgramBuilder::uniform(const std::string& name, int components, int line) {
-  addBinding(program_.uniforms, Binding{name, components, line});
+std::vector<Reg> ProgramBuilder::uniform(const std::string& name, int components, int line,
+                                         int columns) {
+  addBinding(program_.uniforms, Binding{name, components, line, columns});
   return reads(OpCode::Uniform, name, components, line);
 }
 
@@ -305,6 +307,27 @@ Value ProgramBuilder::builtin(glslang::TOperator op, const std::vector<Value>& a
   }
 }
 
+Value ProgramBuilder::lookup(const std::string& sampler, bool cube, const Value& coordinates,
+                             int line) {
+  if (!coordinates.refusal.empty()) return Value{Shape{Kind::Float, 4, 1}, {}, coordinates.refusal};
+  std::vector<std::string>& samplers = cube ? program_.samplersCube : program_.samplers2D;
+  if (std::find(samplers.begin(), samplers.end(), sampler) == samplers.end())
+    samplers.push_back(sampler);
+  const OpCode code = cube ? OpCode::TextureCube : OpCode::Texture2D;
+  std::vector<Reg> args = coordinates.regs;
+  args.resize(cube ? 3 : 2);
+  Value value{Shape{Kind::Float, 4, 1}, emit(code, std::move(args), 4, line), {}};
+  program_.ops.back().name = sampler;
+  return value;
+}
+
+Value ProgramBuilder::inverse(const Value& matrix, int line) {
+  if (!matrix.refusal.empty()) return matrix;
+  const int width = matrix.shape.rows;
+  return Value{matrix.shape, emit(OpCode::Inverse, matrix.regs, width * width, line, false, width),
+               {}};
+}
+
 Value ProgramBuilder::select(const Value& condition, const Value& then, const Value& otherwise,
                              int line, const Refuse& refuse) {
   if (std::string refusal = refusalOf({condition, then, otherwise}); !refusal.empty())
@@ -378,7 +401,9 @@ const char* opCodeName(OpCode code) {
       "literal",   "uniform", "input",     "add",         "sub",           "mul",  "div",
       "neg",       "less",    "lessEqual", "boolToFloat", "sumOfProducts", "dot",  "length",
       "normalize", "reflect", "refract",   "mix",         "pow",           "sqrt", "inversesqrt",
-      "exp",       "exp2",    "log2",      "max",         "min",           "abs",  "clamp"};
+      "exp",       "exp2",    "log2",      "max",         "min",           "abs",  "clamp",
+      "select",    "textureCube", "texture2D", "inverse"};
+  static_assert(std::size(kNames) == static_cast<std::size_t>(OpCode::Inverse) + 1);
   return kNames[static_cast<int>(code)];
 }
 

@@ -51,7 +51,7 @@ class ProgramBuilder {
   }
 
   Reg literal(double value, bool isBool);
-  std::vector<Reg> uniform(const std::string& name, int components, int line);
+  std::vector<Reg> uniform(const std::string& name, int components, int line, int columns = 1);
   std::vector<Reg> input(const std::string& name, int components, int line);
 
   Value binary(glslang::TOperator op, const Value& left, const Value& right, Shape result, int line,
@@ -61,6 +61,11 @@ class ProgramBuilder {
   Value construct(Shape result, const std::vector<Value>& args, int line, const Refuse& refuse);
   Value builtin(glslang::TOperator op, const std::vector<Value>& args, Shape result, int line,
                 const Refuse& refuse);
+
+  // texture(sampler, coordinates) on a samplerCube (`cube`) or a sampler2D,
+  // and inverse(m): double-only operations (ir.h) for the reference image.
+  Value lookup(const std::string& sampler, bool cube, const Value& coordinates, int line);
+  Value inverse(const Value& matrix, int line);
 
   // `condition ? then : otherwise`, component by component.
   Value select(const Value& condition, const Value& then, const Value& otherwise, int line,

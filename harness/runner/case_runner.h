@@ -4,6 +4,7 @@
 // not depend on the backend, so it is computed once per case and shared.
 #include <filesystem>
 #include <map>
+#include <tuple>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "backends/backend.h"
 #include "core/case.h"
 #include "oracle/vertex_oracle.h"
+#include "runner/listing_oracles.h"
 #include "runner/case_result.h"
 #include "runner/image_check.h"
 
@@ -21,11 +23,14 @@ class OracleCache {
   // Evaluates on first use. Throws UsageError when the manifest captures an
   // output the oracle does not compute.
   // Intervals follow `rules`, the API of the backend they judge.
-  const std::vector<OracleVarying>& get(const Case& c, const ResolvedBindings& bindings,
-                                        PrecisionRules rules, double* secondsSpent);
+  const std::vector<OracleVarying>& get(const Case& c, const NamedOracle& oracle,
+                                        const ResolvedBindings& bindings, PrecisionRules rules,
+                                        double* secondsSpent);
 
  private:
-  std::map<std::pair<std::string, PrecisionRules>, std::vector<OracleVarying>> results_;
+  // By case id and oracle label.
+  std::map<std::tuple<std::string, std::string, PrecisionRules>, std::vector<OracleVarying>>
+      results_;
 };
 
 class SceneCache {

@@ -11,6 +11,7 @@
 #include "runner/builtin_eval.h"
 #include "runner/failure_report.h"
 #include "runner/image_check.h"
+#include "runner/listing_oracles.h"
 
 namespace snell {
 namespace {
@@ -19,17 +20,22 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-void checkCapturesAgainstOracle(const Manifest& m, const VertexOracle& oracle) {
+void checkCapturesAgainstOracle(const Manifest& m, const NamedOracle& named) {
+  const VertexOracle& oracle = *named.oracle;
+  const std::string& label = named.label;
+  // The derived oracle computes every capture that is not one of the
+  // stage's inputs; an input it does not read is left unread.
+  const bool derived = label == kDerivedOracleLabel;
   const std::vector<std::string> inputs = oracle.inputs(), outputs = oracle.outputs();
   bool anyOutput = false;
   for (const FragmentCapture& capture : m.captureFragment) {
     if (contains(outputs, capture.name))
       anyOutput = true;
-    else if (!contains(inputs, capture.name))
+    else if (!derived && !contains(inputs, capture.name))
       throw UsageError(fmt::format(
           "{}:{}: capture `{}` is neither an input nor an output of oracle `{}` (inputs: {}; "
           "outputs: {}); capture only what the oracle reads or computes",
-          m.path.string(), capture.manifestLine, capture.name, m.oracle, fmt::join(inputs, ", "),
+          m.path.string(), capture.manifestLine, capture.name, label, fmt::join(inputs, ", "),
           fmt::join(outputs, ", ")));
   }
   for (const std::string& input : inputs)
@@ -38,12 +44,12 @@ void checkCapturesAgainstOracle(const Manifest& m, const VertexOracle& oracle) {
       throw UsageError(
           fmt::format("{}:{}: oracle `{}` reads `{}`; capture it in "
                       "`capture.fragment` at a line where it holds its value",
-                      m.path.string(), m.captureLine, m.oracle, input));
+                      m.path.string(), m.captureLine, label, input));
   if (!anyOutput)
     throw UsageError(
         fmt::format("{}:{}: `capture.fragment` reads none of oracle `{}`'s outputs "
                     "({}), so nothing would be checked",
-                    m.path.string(), m.captureLine, m.oracle, fmt::join(outputs, ", ")));
+                    m.path.string(), m.captureLine, label, fmt::join(outputs, ", ")));
 }
 
 struct Pixel {
@@ -100,7 +106,8 @@ void requireDrawingScene(const Manifest& m, const Scene& scene) {
 void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, const Scene& scene) {
   if (m.captureFragment.empty()) return;
   requireDrawingScene(m, scene);
-  checkCapturesAgainstOracle(m, *makeVertexOracle(m.oracle));
+  for (const NamedOracle& oracle : vectorOracles(m, CaptureStage::Fragment))
+    checkCapturesAgainstOracle(m, oracle);
   insertFragmentProbes(program.fragment, program.fragmentPath, probesOf(m),
                        ProbeOutputStyle::Outputs);
 }
@@ -108,8 +115,8 @@ void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, cons
 FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
                                          const ResolvedBindings& bindings) {
   requireDrawingScene(m, scene);
-  const std::unique_ptr<VertexOracle> oracle = makeVertexOracle(m.oracle);
-  checkCapturesAgainstOracle(m, *oracle);
+  const std::vector<NamedOracle> oracles = vectorOracles(m, CaptureStage::Fragment);
+  for (const NamedOracle& oracle : oracles) checkCapturesAgainstOracle(m, oracle);
 
   RenderJob job = sceneRenderJob(m, scene, bindings);
   job.probes = probesOf(m);
@@ -121,8 +128,12 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     return check;
   }
 
-  // Checked: the pixels where every input was read (alpha 1 marks a write).
-  const std::vector<std::string> inputNames = oracle->inputs();
+  // Checked: the pixels where every input of every oracle was read (alpha 1
+  // marks a write).
+  std::vector<std::string> inputNames;
+  for (const NamedOracle& oracle : oracles)
+    for (const std::string& name : oracle.oracle->inputs())
+      if (!contains(inputNames, name)) inputNames.push_back(name);
   std::vector<Pixel> pixels;
   for (int y = 0; y < scene.height; ++y)
     for (int x = 0; x < scene.width; ++x) {
@@ -137,11 +148,17 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
 
   AttributeMap inputs;
   std::vector<CapturedVarying> observed;
+  const auto isInput = [&](const FragmentCapture& capture) {
+    return contains(inputNames, capture.name) ||
+           std::none_of(oracles.begin(), oracles.end(), [&](const NamedOracle& oracle) {
+             return contains(oracle.oracle->outputs(), capture.name);
+           });
+  };
   for (std::size_t k = 0; k < m.captureFragment.size(); ++k) {
     const FragmentCapture& capture = m.captureFragment[k];
     const int components = componentCount(capture.type);
     std::vector<float> values = valuesAt(outcome.probes[k], pixels, components);
-    if (contains(inputNames, capture.name)) {
+    if (isInput(capture)) {
       inputs[capture.name] = AttributeStream{capture.name, components, std::move(values)};
       continue;
     }
@@ -157,23 +174,32 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     observed.push_back(CapturedVarying{capture.name, components, std::move(values)});
   }
 
-  const auto start = std::chrono::steady_clock::now();
-  std::vector<OracleVarying> expected =
-      oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
-                        precisionRulesForApi(backend.driverInfo().api)});
-  check.oracleSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const CapturedVarying& values : observed) {
-    const auto found = std::find_if(expected.begin(), expected.end(),
-                                    [&](const OracleVarying& v) { return v.name == values.name; });
-    VaryingCheck varying = checkVarying(*found, values);
-    const auto capture =
-        std::find_if(m.captureFragment.begin(), m.captureFragment.end(),
-                     [&](const FragmentCapture& c) { return c.name == values.name; });
-    if (varying.failed)
-      check.failures += describe(varying, pixels, inputs, bindings.uniforms, *capture,
-                                 job.program.fragmentPath);
-    check.varyings.push_back(std::move(varying));
+  for (const NamedOracle& oracle : oracles) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<OracleVarying> expected =
+        oracle.oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
+                                 precisionRulesForApi(backend.driverInfo().api)});
+    check.oracleSeconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::string failures;
+    for (const CapturedVarying& values : observed) {
+      const auto found =
+          std::find_if(expected.begin(), expected.end(),
+                       [&](const OracleVarying& v) { return v.name == values.name; });
+      VaryingCheck varying = checkVarying(*found, values);
+      const auto capture =
+          std::find_if(m.captureFragment.begin(), m.captureFragment.end(),
+                       [&](const FragmentCapture& c) { return c.name == values.name; });
+      if (varying.failed)
+        failures += describe(varying, pixels, inputs, bindings.uniforms, *capture,
+                             job.program.fragmentPath);
+      // With two oracles the second one's checks carry its label.
+      if (&oracle != &oracles.front()) varying.name += " (" + oracle.label + ")";
+      check.varyings.push_back(std::move(varying));
+    }
+    if (oracles.size() > 1 && !failures.empty())
+      failures = "against oracle " + oracle.label + ":\n" + failures;
+    check.failures += failures;
   }
   if (!check.failures.empty()) check.failures = constantsDisagreement(m, job.program) + check.failures;
   return check;

@@ -11,6 +11,7 @@
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "runner/image_check.h"
+#include "runner/listing_oracles.h"
 
 namespace snell {
 namespace {
@@ -52,7 +53,8 @@ const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
 ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                                       const ResolvedBindings& bindings) {
   const Manifest& m = *c.manifest;
-  ReferenceInput input{m.oracle,
+  const DrawingOracles oracles = drawingOracles(m);
+  ReferenceInput input{oracles.label,
                        bindings.uniforms,
                        m.constants,
                        bindings.attributes,
@@ -63,7 +65,9 @@ ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                        scene.height,
                        {0, 0, 0, 0},
                        true,
-                       decalBindings(m, scene)};
+                       decalBindings(m, scene),
+                       oracles.vertex.get(),
+                       oracles.fragment.get()};
   ++rendered_;
   return renderReferenceImage(input);
 }

@@ -143,8 +143,12 @@ bool finiteColor(const std::array<double, 4>& color) {
 }  // namespace
 
 ReferenceImage renderReferenceImage(const ReferenceInput& input) {
-  const std::unique_ptr<FragmentOracle> fragment = makeFragmentOracle(input.oracle);
-  const std::unique_ptr<VertexOracle> vertex = makeVertexOracle(input.oracle);
+  const std::unique_ptr<FragmentOracle> registeredFragment =
+      input.fragment ? nullptr : makeFragmentOracle(input.oracle);
+  const std::unique_ptr<VertexOracle> registeredVertex =
+      input.vertex ? nullptr : makeVertexOracle(input.oracle);
+  const FragmentOracle* fragment = input.fragment ? input.fragment : registeredFragment.get();
+  const VertexOracle* vertex = input.vertex ? input.vertex : registeredVertex.get();
   checkCubeMaps(input, *fragment);
   checkTextures2D(input, *fragment);
   checkUniforms(input, *fragment);

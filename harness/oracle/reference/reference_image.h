@@ -23,8 +23,11 @@ struct ReferenceImage {
   std::size_t count(PixelMask m) const;
 };
 
+class VertexOracle;
+class FragmentOracle;
+
 struct ReferenceInput {
-  std::string oracle;               // the manifest's `oracle`: names the vertex and fragment parts
+  std::string oracle;  // names the listing's parts in messages, and finds them when not given below
   const UniformMap& uniforms;
   const ConstantMap& constants;
   const AttributeMap& attributes;
@@ -37,6 +40,10 @@ struct ReferenceInput {
   bool cullBackFaces = true;
   // sampler2D uniforms by GLSL name, sampled as RenderJob::textures2D says.
   std::map<std::string, const Image*> textures2D{};
+  // The listing's parts (a derived oracle's, harness/derived); null: the
+  // parts registered under `oracle`.
+  const VertexOracle* vertex = nullptr;
+  const FragmentOracle* fragment = nullptr;
 };
 
 // Whether the listing named by `oracle` has a fragment part (it draws).

@@ -10,6 +10,7 @@
 #include "runner/case_runner.h"
 #include "runner/image_check.h"
 #include "runner/json_fields.h"
+#include "runner/listing_oracles.h"
 #include "runner/run_helpers.h"
 
 namespace snell {
@@ -74,11 +75,7 @@ void ImageCheckKind::validate(const Case& c, const ProgramSource&, const Scene& 
     manifestErrorAt(
         m, c.spec.line,
         fmt::format("scene `{}` draws nothing; its cases check [\"vectors\"] only", scene.name));
-  if (!hasFragmentOracle(m.oracle))
-    manifestErrorAt(
-        m, m.oracleLine,
-        fmt::format("oracle `{}` has no fragment part, so the \"image\" check has no reference",
-                    m.oracle));
+  drawingOracles(m);  // throws, naming the place, when there is no reference to draw
 }
 
 void ImageCheckKind::run(const Case& c, const ResolvedBindings& bindings, CheckEnvironment& env,

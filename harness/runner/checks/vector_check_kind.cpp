@@ -14,6 +14,7 @@
 #include "runner/failure_report.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/json_fields.h"
+#include "runner/listing_oracles.h"
 #include "runner/run_helpers.h"
 
 namespace snell {
@@ -22,21 +23,23 @@ namespace {
 // An oracle that does not compute a captured output would leave the worker
 // with nothing to compare: said here, with the manifest line, instead.
 void checkOracleComputesCaptures(const Manifest& m) {
-  const std::vector<std::string> outputs = makeVertexOracle(m.oracle)->outputs();
-  for (const std::string& name : m.captureVertex)
-    if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
-      manifestErrorAt(
-          m, m.captureLine,
-          fmt::format("capture.vertex names `{}`, which oracle `{}` does not compute (it "
-                      "computes {}); capture one of those or name another oracle",
-                      name, m.oracle, fmt::join(outputs, ", ")));
+  if (m.captureVertex.empty()) return;
+  for (const NamedOracle& named : vectorOracles(m, CaptureStage::Vertex)) {
+    const std::vector<std::string> outputs = named.oracle->outputs();
+    for (const std::string& name : m.captureVertex)
+      if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
+        manifestErrorAt(
+            m, m.captureLine,
+            fmt::format("capture.vertex names `{}`, which oracle `{}` does not compute (it "
+                        "computes {}); capture one of those or name another oracle",
+                        name, named.label, fmt::join(outputs, ", ")));
+  }
 }
 
 void runVertexOutputs(const Case& c, const ResolvedBindings& bindings, CheckEnvironment& env,
                       CaseResult& result) {
   const Manifest& m = *c.manifest;
-  const std::vector<OracleVarying>& expected =
-      env.oracles.get(c, bindings, precisionRulesForApi(env.driver.api), &result.oracleSeconds);
+  const std::vector<NamedOracle> oracles = vectorOracles(m, CaptureStage::Vertex);
   CaptureJob job{loadProgram(m), bindings.uniforms, bindings.attributes, m.captureVertex,
                  bindings.vertexCount};
   const auto backendStart = std::chrono::steady_clock::now();
@@ -48,10 +51,27 @@ void runVertexOutputs(const Case& c, const ResolvedBindings& bindings, CheckEnvi
     result.message = outcome.compile.log;
     return;
   }
-  for (std::size_t k = 0; k < expected.size(); ++k)
-    result.varyings.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
+  for (const NamedOracle& oracle : oracles) {
+    double seconds = 0;
+    const std::vector<OracleVarying>& expected =
+        env.oracles.get(c, oracle, bindings, precisionRulesForApi(env.driver.api), &seconds);
+    result.oracleSeconds += seconds;
+    std::vector<VaryingCheck> checks;
+    for (std::size_t k = 0; k < expected.size(); ++k)
+      checks.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
+    // With two oracles the second one's checks carry its label: the summary
+    // and the failures say which oracle a value left.
+    std::string failures = describeVertexFailures(m, job.program, bindings, checks);
+    if (&oracle != &oracles.front()) {
+      for (VaryingCheck& check : checks) check.name += " (" + oracle.label + ")";
+      if (!failures.empty()) failures = "against oracle " + oracle.label + ":\n" + failures;
+    } else if (oracles.size() > 1 && !failures.empty()) {
+      failures = "against oracle " + oracle.label + ":\n" + failures;
+    }
+    result.message += failures;
+    for (VaryingCheck& check : checks) result.varyings.push_back(std::move(check));
+  }
   if (result.componentsFailed()) result.status = worstOf(result.status, Status::Fail);
-  result.message += describeVertexFailures(m, job.program, bindings, result.varyings);
 }
 
 void runFragmentValues(const Case& c, const ResolvedBindings& bindings, CheckEnvironment& env,

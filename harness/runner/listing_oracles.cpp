@@ -1,0 +1,83 @@
+#include "runner/listing_oracles.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "core/glsl_declarations.h"
+#include "derived/derived_drawing.h"
+#include "derived/derived_vertex_oracle.h"
+#include "oracle/reference/reference_image.h"
+#include "runner/run_helpers.h"
+
+namespace snell {
+namespace {
+
+derived::ShaderSource stageSource(const Manifest& m, CaptureStage stage) {
+  const ProgramSource program = loadProgram(m);
+  if (stage == CaptureStage::Vertex)
+    return {program.vertexPath, program.vertex, derived::Stage::Vertex};
+  return {program.fragmentPath, program.fragment, derived::Stage::Fragment};
+}
+
+// The derived oracle's requests: the vertex captures at the end of main(),
+// the fragment captures that are not the stage's inputs after their lines.
+std::vector<derived::OutputRequest> requests(const Manifest& m, CaptureStage stage) {
+  std::vector<derived::OutputRequest> wanted;
+  if (stage == CaptureStage::Vertex) {
+    for (const std::string& name : m.captureVertex) wanted.push_back({name, 0});
+    return wanted;
+  }
+  const auto declarations = readGlobalDeclarations(loadProgram(m).fragment);
+  for (const FragmentCapture& capture : m.captureFragment) {
+    const bool input = std::any_of(declarations.begin(), declarations.end(), [&](const auto& d) {
+      return d.name == capture.name && (d.qualifier == "in" || d.qualifier == "varying");
+    });
+    if (!input) wanted.push_back({capture.name, capture.line});
+  }
+  return wanted;
+}
+
+std::unique_ptr<VertexOracle> handWritten(const Manifest& m) {
+  try {
+    return makeVertexOracle(m.oracle);
+  } catch (const UsageError& error) {
+    manifestErrorAt(m, m.oracleLine, error.what());
+  }
+}
+
+}  // namespace
+
+std::vector<NamedOracle> vectorOracles(const Manifest& m, CaptureStage stage) {
+  std::vector<NamedOracle> oracles;
+  if (!m.oracle.empty()) oracles.push_back({m.oracle, handWritten(m)});
+  if (m.derivedOracle) {
+    const derived::ShaderSource source = stageSource(m, stage);
+    oracles.push_back(
+        {kDerivedOracleLabel, derived::makeDerivedVectorOracle(source, requests(m, stage))});
+  }
+  return oracles;
+}
+
+DrawingOracles drawingOracles(const Manifest& m) {
+  if (!m.oracle.empty() && (hasFragmentOracle(m.oracle) || !m.derivedOracle)) {
+    if (!hasFragmentOracle(m.oracle))
+      manifestErrorAt(
+          m, m.oracleLine,
+          fmt::format("oracle `{}` has no fragment part, so the \"image\" check has no "
+                      "reference; add \"derived\" to `oracle` for one drawn from the listing",
+                      m.oracle));
+    return {m.oracle, handWritten(m), makeFragmentOracle(m.oracle)};
+  }
+  return {kDerivedOracleLabel,
+          derived::makeDerivedDrawingVertexOracle(stageSource(m, CaptureStage::Vertex)),
+          derived::makeDerivedFragmentOracle(stageSource(m, CaptureStage::Fragment))};
+}
+
+std::string oracleLabel(const Manifest& m) {
+  if (m.oracle.empty()) return kDerivedOracleLabel;
+  return m.derivedOracle ? m.oracle + " + " + kDerivedOracleLabel : m.oracle;
+}
+
+}  // namespace snell
