@@ -35,8 +35,8 @@ class DrawingVertexOracle final : public VertexOracle {
   std::vector<OracleVarying> evaluate(const OracleInput& input) const override {
     const UniformMap uniforms = withLegacyState(program_, input.uniforms);
     checkBindings(program_, uniforms, input.attributes, input.vertexCount);
-    const auto values = evaluateReference(program_, uniforms, input.attributes,
-                                          input.vertexCount, nullptr, nullptr);
+    const auto values = evaluateReference(program_, uniforms, input.attributes, input.vertexCount,
+                                          nullptr, nullptr);
     std::vector<OracleVarying> varyings;
     for (std::size_t k = 0; k < program_.outputs.size(); ++k) {
       OracleVarying varying;
@@ -124,11 +124,11 @@ class DerivedFragmentOracle final : public FragmentOracle {
 }  // namespace
 
 std::unique_ptr<VertexOracle> makeDerivedDrawingVertexOracle(const ShaderSource& vertex) {
-  return std::make_unique<DrawingVertexOracle>(lowerShader(vertex, {}, kReference));
+  return std::make_unique<DrawingVertexOracle>(lowerOutputs(vertex, {}, kReference));
 }
 
 std::unique_ptr<FragmentOracle> makeDerivedFragmentOracle(const ShaderSource& fragment) {
-  Program program = lowerShader(fragment, {}, kReference);
+  Program program = lowerOutputs(fragment, {}, kReference);
   if (program.outputs.size() != 1)
     throw UsageError(fmt::format(
         "{}: the fragment stage writes {} outputs; the derived oracle's reference image follows "

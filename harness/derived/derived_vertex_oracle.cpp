@@ -41,7 +41,7 @@ std::unique_ptr<VertexOracle> makeDerivedVertexOracle(const ShaderSource& source
 
 std::unique_ptr<VertexOracle> makeDerivedVectorOracle(const ShaderSource& source,
                                                       const std::vector<OutputRequest>& outputs) {
-  return std::make_unique<DerivedVertexOracle>(lowerShader(source, outputs));
+  return std::make_unique<DerivedVertexOracle>(lowerOutputs(source, outputs));
 }
 
 }  // namespace snell::derived

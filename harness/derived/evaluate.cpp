@@ -4,16 +4,16 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <map>
-#include <cmath>
 #include <span>
 #include <stdexcept>
 
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
-#include "oracle/branch_paths.h"
 #include "derived/sample_ways.h"
+#include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
 #include "oracle/glsl/texture.h"
 #include "oracle/interval.h"
@@ -359,8 +359,8 @@ class Evaluation {
       return;
     }
     if (!textures_)
-      throw std::logic_error(fmt::format("{}:{}: a lookup with no textures bound", program_.file,
-                                         op.line));
+      throw std::logic_error(
+          fmt::format("{}:{}: a lookup with no textures bound", program_.file, op.line));
     const bool cube = op.code == OpCode::TextureCube;
     glsl::samplerCube cubeSampler;
     glsl::sampler2D sampler2D;
@@ -552,12 +552,9 @@ UniformMap withLegacyState(const Program& program, const UniformMap& bound) {
   return legacy ? withDerivedLegacyState(bound) : bound;
 }
 
-std::vector<std::vector<double>> evaluateReference(const Program& program,
-                                                   const UniformMap& uniforms,
-                                                   const AttributeMap& inputs,
-                                                   std::size_t sampleCount,
-                                                   const FragmentBindings* textures,
-                                                   LookupFindings* findings) {
+std::vector<std::vector<double>> evaluateReference(
+    const Program& program, const UniformMap& uniforms, const AttributeMap& inputs,
+    std::size_t sampleCount, const FragmentBindings* textures, LookupFindings* findings) {
   Evaluation<double> evaluation(program, uniforms, inputs, sampleCount);
   evaluation.textures_ = textures;
   if (findings) {

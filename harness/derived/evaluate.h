@@ -55,12 +55,9 @@ struct LookupFindings {
 // The reference image's evaluation of a LowerOptions::doubleOnly program:
 // double only, the lookups sampling `textures` (may be null when the
 // program has none). Expects checked bindings.
-std::vector<std::vector<double>> evaluateReference(const Program& program,
-                                                   const UniformMap& uniforms,
-                                                   const AttributeMap& inputs,
-                                                   std::size_t sampleCount,
-                                                   const FragmentBindings* textures,
-                                                   LookupFindings* findings);
+std::vector<std::vector<double>> evaluateReference(
+    const Program& program, const UniformMap& uniforms, const AttributeMap& inputs,
+    std::size_t sampleCount, const FragmentBindings* textures, LookupFindings* findings);
 
 // The three number types together, as a listing oracle reports them, under
 // `rules`. Checks the bindings first. A program that reads legacy

@@ -773,11 +773,11 @@ class Lowering {
 Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs) {
   std::vector<OutputRequest> requests;
   for (const std::string& name : outputs) requests.push_back({name, 0});
-  return lowerShader(source, requests);
+  return lowerOutputs(source, requests);
 }
 
-Program lowerShader(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
-                    LowerOptions options) {
+Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
+                     LowerOptions options) {
   ensureGlslangInitialised();
   const std::string text = withoutConstQualifiers(source.text);
   const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;

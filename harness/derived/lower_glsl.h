@@ -54,8 +54,8 @@ struct LowerOptions {
 
 // The program computing `outputs`; none means every output variable the
 // shader writes. Operations no output needs are dropped.
-Program lowerShader(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
-                    LowerOptions options = {});
+Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
+                     LowerOptions options = {});
 // The same, every name at the end of main().
 Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs = {});
 

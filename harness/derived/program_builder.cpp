@@ -324,8 +324,8 @@ Value ProgramBuilder::lookup(const std::string& sampler, bool cube, const Value&
 Value ProgramBuilder::inverse(const Value& matrix, int line) {
   if (!matrix.refusal.empty()) return matrix;
   const int width = matrix.shape.rows;
-  return Value{matrix.shape, emit(OpCode::Inverse, matrix.regs, width * width, line, false, width),
-               {}};
+  return Value{
+      matrix.shape, emit(OpCode::Inverse, matrix.regs, width * width, line, false, width), {}};
 }
 
 Value ProgramBuilder::select(const Value& condition, const Value& then, const Value& otherwise,
@@ -398,11 +398,12 @@ Program ProgramBuilder::finish(std::vector<Variable> outputs) {
 
 const char* opCodeName(OpCode code) {
   static constexpr const char* kNames[] = {
-      "literal",   "uniform", "input",     "add",         "sub",           "mul",  "div",
-      "neg",       "less",    "lessEqual", "boolToFloat", "sumOfProducts", "dot",  "length",
-      "normalize", "reflect", "refract",   "mix",         "pow",           "sqrt", "inversesqrt",
-      "exp",       "exp2",    "log2",      "max",         "min",           "abs",  "clamp",
-      "select",    "textureCube", "texture2D", "inverse"};
+      "literal",   "uniform", "input",       "add",       "sub",         "mul",
+      "div",       "neg",     "less",        "lessEqual", "boolToFloat", "sumOfProducts",
+      "dot",       "length",  "normalize",   "reflect",   "refract",     "mix",
+      "pow",       "sqrt",    "inversesqrt", "exp",       "exp2",        "log2",
+      "max",       "min",     "abs",         "clamp",     "select",      "textureCube",
+      "texture2D", "inverse"};
   static_assert(std::size(kNames) == static_cast<std::size_t>(OpCode::Inverse) + 1);
   return kNames[static_cast<int>(code)];
 }

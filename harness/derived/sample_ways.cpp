@@ -1,7 +1,7 @@
 #include "derived/sample_ways.h"
 
-#include "oracle/branch_paths.h"
 #include "derived/evaluate.h"
+#include "oracle/branch_paths.h"
 #include "oracle/glsl/scalar.h"
 #include "oracle/interval.h"
 #include "oracle/way_alternatives.h"

@@ -27,13 +27,13 @@ std::string sampleInputs(const AttributeMap& inputs, const UniformMap& uniforms,
   std::vector<std::string> parts;
   for (const auto& [name, stream] : inputs)
     if (vertex < stream.vertexCount())
-      parts.push_back(fmt::format("{} = {}", name,
-                                  components(&stream.data[vertex * stream.components],
-                                             stream.components)));
+      parts.push_back(
+          fmt::format("{} = {}", name,
+                      components(&stream.data[vertex * stream.components], stream.components)));
   for (const auto& [name, value] : uniforms)
     if (value.data.size() <= 4 && !value.data.empty())
-      parts.push_back(fmt::format("{} = {}", name,
-                                  components(value.data.data(), static_cast<int>(value.data.size()))));
+      parts.push_back(fmt::format(
+          "{} = {}", name, components(value.data.data(), static_cast<int>(value.data.size()))));
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
@@ -46,8 +46,8 @@ std::string constantsDisagreement(const Manifest& m, const ProgramSource& progra
     const std::string& source;
     const std::string& file;
   };
-  for (const Stage& stage : {Stage{program.vertex, program.vertexPath},
-                             Stage{program.fragment, program.fragmentPath}}) {
+  for (const Stage& stage :
+       {Stage{program.vertex, program.vertexPath}, Stage{program.fragment, program.fragmentPath}}) {
     std::istringstream lines(withoutComments(stage.source));
     int lineNumber = 0;
     for (std::string line; std::getline(lines, line);) {
@@ -91,7 +91,8 @@ std::string nothingCheckedReasons(const Manifest& m, const CaseResult& result) {
     if (v.checked == 0) {
       reasons += fmt::format("{}: nothing checked: the spec leaves all {} components undefined\n",
                              v.name, all);
-    } else if (static_cast<double>(v.undefined) > m.maxUndefinedFraction * static_cast<double>(all)) {
+    } else if (static_cast<double>(v.undefined) >
+               m.maxUndefinedFraction * static_cast<double>(all)) {
       reasons += fmt::format(
           "{}: the spec leaves {} of {} components ({:.2f}%) undefined, more than max_undefined = "
           "{} allows; change the scene, or raise max_undefined in {} if the listing means it\n",
@@ -101,8 +102,8 @@ std::string nothingCheckedReasons(const Manifest& m, const CaseResult& result) {
   }
   for (const ImageComparison& image : result.images)
     if (image.compared == 0 && image.problem.empty())
-      reasons += fmt::format("image against {}: nothing compared: every pixel is masked\n",
-                             image.against);
+      reasons +=
+          fmt::format("image against {}: nothing compared: every pixel is masked\n", image.against);
   return reasons;
 }
 

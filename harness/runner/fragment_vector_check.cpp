@@ -70,10 +70,10 @@ std::vector<float> valuesAt(const Image& probe, const std::vector<Pixel>& pixels
 std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels,
                      const AttributeMap& inputs, const UniformMap& uniforms,
                      const FragmentCapture& capture, const std::string& fragmentPath) {
-  std::string text =
-      fmt::format("{}: {} of {} components outside the spec interval (read after {}:{}); worst "
-                  "first:\n",
-                  v.name, v.failed, v.checked, fragmentPath, capture.line);
+  std::string text = fmt::format(
+      "{}: {} of {} components outside the spec interval (read after {}:{}); worst "
+      "first:\n",
+      v.name, v.failed, v.checked, fragmentPath, capture.line);
   for (const ComponentFailure& f : v.worstFailures) {
     const Pixel& p = pixels.at(f.vertex);
     text += fmt::format(
@@ -201,7 +201,8 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
       failures = "against oracle " + oracle.label + ":\n" + failures;
     check.failures += failures;
   }
-  if (!check.failures.empty()) check.failures = constantsDisagreement(m, job.program) + check.failures;
+  if (!check.failures.empty())
+    check.failures = constantsDisagreement(m, job.program) + check.failures;
   return check;
 }
 
