@@ -4,6 +4,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <optional>
 
 #include "core/errors.h"
 #include "core/glsl_declarations.h"
@@ -66,6 +67,36 @@ AttributeStream apiDefaultInput(const Manifest& manifest, const std::string& nam
   return stream;
 }
 
+// The components a vertex input is declared with (float 1, vecN N), or 0
+// when the listing does not declare it as a float input (a built-in such as
+// gl_Vertex, or a name the manifest check reports).
+int declaredInputComponents(const std::vector<GlslDeclaration>& vertex, const std::string& name) {
+  for (const GlslDeclaration& d : vertex) {
+    if ((d.qualifier != "in" && d.qualifier != "attribute") || d.name != name) continue;
+    if (d.type == "float") return 1;
+    if (d.type.size() == 4 && d.type.rfind("vec", 0) == 0 && d.type[3] >= '2' && d.type[3] <= '4')
+      return d.type[3] - '0';
+    return 0;
+  }
+  return 0;
+}
+
+// The scene's stream as the listing declares it: a `vec3 aPos` bound to the
+// vec4 scene.position gets x, y, z of each vertex, so backends, hand-written
+// and derived oracles all read the same values with the declared shape. A
+// stream narrower than the declaration is left for the manifest check.
+AttributeStream shapedAs(const AttributeStream& scene, int components) {
+  if (components <= 0 || components >= scene.components) return scene;
+  AttributeStream out{scene.name, components, {}};
+  const std::size_t vertices = scene.vertexCount();
+  out.data.reserve(vertices * static_cast<std::size_t>(components));
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const auto first = scene.data.begin() + static_cast<std::ptrdiff_t>(v * scene.components);
+    out.data.insert(out.data.end(), first, first + components);
+  }
+  return out;
+}
+
 }  // namespace
 
 ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
@@ -87,6 +118,7 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
       unknownSemantic(manifest, binding, scene, semantic);
     // Samplers are bound by the pixel path; the vertex stage does not read them.
   }
+  std::optional<std::vector<GlslDeclaration>> vertexDeclarations;  // read once, when needed
   for (const Binding& binding : manifest.inputs) {
     if (binding.apiDefault) {
       out.attributes[binding.name] = apiDefaultInput(manifest, binding.name, scene.vertexCount);
@@ -99,7 +131,10 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
     const std::string& semantic = std::get<std::string>(binding.source);
     auto it = scene.attributes.find(semantic);
     if (it == scene.attributes.end()) unknownSemantic(manifest, binding, scene, semantic);
-    AttributeStream stream = it->second;
+    if (!vertexDeclarations)
+      vertexDeclarations = readGlobalDeclarations(loadProgram(manifest).vertex);
+    AttributeStream stream =
+        shapedAs(it->second, declaredInputComponents(*vertexDeclarations, binding.name));
     stream.name = binding.name;
     out.attributes[binding.name] = std::move(stream);
   }

@@ -31,14 +31,23 @@ void addCameraValues(Scene& scene, const SceneFile& file) {
                             {file.up[0], file.up[1], file.up[2]});
   const Mat4d projection = perspective(radians(file.fovyDegrees), 1.0, file.zNear, file.zFar);
   const Mat4d modelview = multiply(view, model);
+  // Each product is formed in double and rounded to float once, so a shader
+  // that multiplies the separate matrices itself (LearnOpenGL's
+  // projection * view * model) and one given the product see values that
+  // differ only by the shader's own rounding.
   scene.values["model"] = toMat4Value(model);
+  scene.values["view"] = toMat4Value(view);
   scene.values["eye_position"] = Value{ValueType::Vec3, {static_cast<float>(eye[0]),
                                                          static_cast<float>(eye[1]),
                                                          static_cast<float>(eye[2])}};
   scene.values["modelview"] = toMat4Value(modelview);
   scene.values["projection"] = toMat4Value(projection);
+  scene.values["view_projection"] = toMat4Value(multiply(projection, view));
   scene.values["modelview_projection"] = toMat4Value(multiply(projection, modelview));
+  // Normals to eye space (gl_NormalMatrix, three.js's normalMatrix) and to
+  // world space (LearnOpenGL's mat3(transpose(inverse(model)))).
   scene.values["normal_matrix"] = normalMatrixValue(modelview);
+  scene.values["model_normal_matrix"] = normalMatrixValue(model);
   const Mat4d environment = multiply(
       translation({file.environmentTranslation[0], file.environmentTranslation[1],
                    file.environmentTranslation[2]}),

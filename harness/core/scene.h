@@ -17,7 +17,11 @@ namespace snell {
 struct Scene {
   std::string name;
   std::string description;
-  UniformMap values;          // "model", "modelview", "modelview_projection", "normal_matrix", ...
+  // "model", "view", "projection", their products "modelview",
+  // "view_projection", "modelview_projection", the normal matrices
+  // "normal_matrix" (eye space) and "model_normal_matrix" (world space),
+  // "eye_position" (world space), ... (the table in shaders/README.md).
+  UniformMap values;
   // "position" (vec4), "normal" (vec3), "tangent" (vec3); on the sphere and
   // the torus also "texcoord" (vec2, the grid's (u, v) in [0, 1]), which the
   // sweep and the full-screen pass have no surface to give, so they omit it.
