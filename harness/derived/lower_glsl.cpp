@@ -74,8 +74,10 @@ class Lowering {
     functionBody(*root, /*allowReturnValue=*/false);
     std::vector<Variable> outputs;
     std::vector<std::string> names;
-    for (const OutputRequest& request : requested) names.push_back(request.name);
-    if (names.empty()) names = writtenOutputs_;
+    for (const OutputRequest& request : requested)
+      if (std::find(fed_.begin(), fed_.end(), request.name) == fed_.end())
+        names.push_back(request.name);
+    if (requested.empty()) names = writtenOutputs_;
     for (const std::string& name : names) outputs.push_back(output(name));
     return builder_.finish(std::move(outputs));
   }
@@ -90,7 +92,18 @@ class Lowering {
       const auto key = names_.find(request.name);
       if (key == names_.end()) continue;
       const auto value = variables_.find(key->second);
-      if (value != variables_.end()) snapshots_[request.name] = value->second;
+      if (value == variables_.end()) continue;
+      if (!value->second.refusal.empty() && source_.stage == Stage::Fragment) {
+        // A fragment capture the oracle cannot compute (it reads
+        // gl_FragCoord, or a ray march's result) is read back and fed in
+        // from here on, as the hand-written oracles take such values.
+        Value fed{value->second.shape, {}, {}};
+        fed.regs = builder_.input(request.name, fed.shape.size(), request.afterLine);
+        value->second = fed;
+        fed_.push_back(request.name);
+        continue;
+      }
+      snapshots_[request.name] = value->second;
     }
   }
 
@@ -702,6 +715,31 @@ class Lowering {
     return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere);
   }
 
+  // `f(` of glslang's mangled `f(f1;`.
+  static std::string functionName(const TIntermAggregate& function) {
+    const std::string mangled = function.getName().c_str();
+    return mangled.substr(0, mangled.find('(') + 1);
+  }
+
+  // The first return statement of `function` that is not its body's last
+  // statement, or null.
+  static const TIntermNode* earlyReturn(TIntermAggregate& function) {
+    struct Finder : glslang::TIntermTraverser {
+      const TIntermNode* last = nullptr;
+      const TIntermNode* found = nullptr;
+      bool visitBranch(glslang::TVisit, glslang::TIntermBranch* branch) override {
+        if (branch->getFlowOp() == glslang::EOpReturn && branch != last && !found) found = branch;
+        return true;
+      }
+    } finder;
+    const glslang::TIntermSequence& parts = function.getSequence();
+    if (parts.size() < 2 || !parts[1]) return nullptr;
+    if (TIntermAggregate* body = parts[1]->getAsAggregate(); body && !body->getSequence().empty())
+      finder.last = body->getSequence().back();
+    parts[1]->traverse(&finder);
+    return finder.found;
+  }
+
   // A user function, inlined: its `in` parameters bound to the arguments.
   Value call(TIntermAggregate& node) {
     auto found = functions_.find(node.getName().c_str());
@@ -712,6 +750,16 @@ class Lowering {
       refuse(node, "recursion");
     std::vector<Value> args;
     for (TIntermNode* child : node.getSequence()) args.push_back(expression(*child->getAsTyped()));
+    // A return before the end (a ray march's `if (hit) return t;` in a
+    // loop) is outside the subset; the call's value is refused, so a
+    // fragment capture computed from it can still be read back and fed in.
+    if (const TIntermNode* early = earlyReturn(function)) {
+      Value refused{shapeOf(node), {}, {}};
+      refused.refusal = builder_.unsupported(
+          fmt::format("a return before the end of {})", functionName(function)),
+          early->getLoc().line);
+      return refused;
+    }
     const glslang::TIntermSequence& parameters =
         function.getSequence()[0]->getAsAggregate()->getSequence();
     for (std::size_t k = 0; k < parameters.size(); ++k) {
@@ -757,6 +805,7 @@ class Lowering {
   LowerOptions options_;
   std::vector<OutputRequest> requests_;
   std::map<std::string, Value> snapshots_;
+  std::vector<std::string> fed_;  // requests read back and fed in, not computed
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;

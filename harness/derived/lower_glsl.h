@@ -53,7 +53,11 @@ struct LowerOptions {
 };
 
 // The program computing `outputs`; none means every output variable the
-// shader writes. Operations no output needs are dropped.
+// shader writes. Operations no output needs are dropped. In a fragment
+// stage, a requested value the oracle cannot follow at its line (it reads
+// gl_FragCoord, or a function with an early return) becomes an input of
+// that name instead, fed with the value read back there: it is left out of
+// the outputs and joins the inputs.
 Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
                      LowerOptions options = {});
 // The same, every name at the end of main().

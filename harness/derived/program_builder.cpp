@@ -292,6 +292,21 @@ Value ProgramBuilder::builtin(glslang::TOperator op, const std::vector<Value>& a
       return Value{result, emit(OpCode::Reflect, joined(2), width, line, false, width), {}};
     case EOpRefract:
       return Value{result, emit(OpCode::Refract, joined(3), width, line, false, width), {}};
+    case EOpCross: {
+      // GLSL 4.60 section 8.5's formula, each product and difference an
+      // operation of its own: x.y * y.z - y.y * x.z, ...
+      const std::vector<Reg>& x = args[0].regs;
+      const std::vector<Reg>& y = args[1].regs;
+      Value value{result, {}, {}};
+      for (int k = 0; k < 3; ++k) {
+        const auto a = static_cast<std::size_t>((k + 1) % 3),
+                   b = static_cast<std::size_t>((k + 2) % 3);
+        const Reg left = emit1(OpCode::Mul, {x[a], y[b]}, line);
+        const Reg right = emit1(OpCode::Mul, {y[a], x[b]}, line);
+        value.regs.push_back(emit1(OpCode::Sub, {left, right}, line));
+      }
+      return value;
+    }
     case EOpMix:
       return componentwise(OpCode::Mix, args, result, line);
     case EOpPow:

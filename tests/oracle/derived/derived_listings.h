@@ -5,11 +5,14 @@
 #include <fstream>
 #include <map>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "../test_geometry.h"
+#include "core/manifest.h"
 #include "core/scene.h"
 #include "core/values.h"
 #include "derived/derived_vertex_oracle.h"
@@ -39,6 +42,13 @@ struct DerivedListing {
   // derived too, gives them (the strict fp32 values, as a driver would).
   const char* vertexStage = nullptr;
   const char* variant = nullptr;  // a second binding of the same listing
+  // A fragment listing whose inputs are values it computes itself (the
+  // Shadertoy post's uv and point_normal, read back at its probes): its
+  // manifest, under shaders/, gives the constants and each capture's line,
+  // and the pixels are eye rays hitting the post's sphere.
+  const char* manifest = nullptr;
+
+  bool readsBackItsOwnValues() const { return manifest != nullptr; }
 
   std::string label() const {
     return variant ? std::string(oracle) + "_" + variant : std::string(oracle);
@@ -179,6 +189,57 @@ inline const std::vector<DerivedListing>& derivedListings() {
        {{"vertex", "position"}, {"normal", "normal"}},
        {{"index_r", 1.097}, {"index_g", 1.1}, {"index_b", 1.103}},
        "cs381/glass/eyespace.vert"},
+      {"snell_method_directions",
+       "methods/fresnel/1-constant-mix/directions.vert",
+       derived::Stage::Vertex,
+       kOrangeBookUniforms,
+       {},
+       {{"MCvertex", "position"}, {"MCnormal", "normal"}},
+       {{"Eta", 0.6666667}, {"Mix", 0.1}}},
+      {"snell_method_empirical",
+       "methods/fresnel/2-empirical/empirical.vert",
+       derived::Stage::Vertex,
+       kOrangeBookUniforms,
+       {},
+       {{"MCvertex", "position"}, {"MCnormal", "normal"}},
+       {{"Eta", 0.6666667}, {"Bias", 0.0}, {"Scale", 0.25}, {"Power", 1.97}}},
+      {"snell_method_per_fragment",
+       "methods/fresnel/4-schlick-fragment/per_fragment.vert",
+       derived::Stage::Vertex,
+       kOrangeBookUniforms,
+       {},
+       {{"MCvertex", "position"}, {"MCnormal", "normal"}},
+       {{"Eta", 0.6666667}, {"FresnelPower", 5.0}}},
+      {"shadertoy_lens",
+       "shadertoy/lens/lens.frag",
+       derived::Stage::Fragment,
+       {},
+       {},
+       {},
+       {},
+       nullptr,
+       nullptr,
+       "shadertoy/lens/manifest.toml"},
+      {"shadertoy_lens_fresnel",
+       "shadertoy/lens-fresnel/lens_fresnel.frag",
+       derived::Stage::Fragment,
+       {},
+       {},
+       {},
+       {},
+       nullptr,
+       nullptr,
+       "shadertoy/lens-fresnel/manifest.toml"},
+      {"shadertoy_bubble",
+       "shadertoy/bubble/bubble.frag",
+       derived::Stage::Fragment,
+       {},
+       {},
+       {},
+       {},
+       nullptr,
+       nullptr,
+       "shadertoy/bubble/manifest.toml"},
   };
   return listings;
 }
@@ -190,8 +251,40 @@ struct BoundListing {
   std::size_t count = 0;
 };
 
+// The Shadertoy post's pixels: uv in [-1, 1]^2 whose eye rays (from the
+// origin through (uv, 1)) hit the sphere of centre (0, 0, 2) and radius 1,
+// and the exact normal there, as fp32 read-backs; pixel 0 looks at the
+// centre (normal incidence).
+inline AttributeMap shadertoyPixels(std::size_t count) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<float> coordinate(-1.0f, 1.0f);
+  AttributeStream uv{"uv", 2, {}}, normal{"point_normal", 3, {}};
+  const Dir centre{0.0, 0.0, 2.0};
+  while (uv.data.size() < 2 * count) {
+    const float x = uv.data.empty() ? 0.0f : coordinate(rng);
+    const float y = uv.data.empty() ? 0.0f : coordinate(rng);
+    const Dir ray = unit({x, y, 1.0});
+    const double b = dotOf(ray, centre);
+    const double discriminant = b * b - (dotOf(centre, centre) - 1.0);
+    if (discriminant < 0.0) continue;
+    const Dir n = unit(plus(scaled(ray, b - std::sqrt(discriminant)), scaled(centre, -1.0)));
+    uv.data.insert(uv.data.end(), {x, y});
+    for (double c : n) normal.data.push_back(static_cast<float>(c));
+  }
+  return {{"uv", uv}, {"point_normal", normal}};
+}
+
+inline Manifest listingManifest(const DerivedListing& listing) {
+  return loadManifest(std::string(SNELL_SOURCE_ROOT) + "/shaders/" + listing.manifest);
+}
+
 inline BoundListing bindListing(const DerivedListing& listing, const Scene& scene) {
   BoundListing bound;
+  if (listing.readsBackItsOwnValues()) {
+    bound.count = 1024;
+    bound.attributes = shadertoyPixels(bound.count);
+    return bound;
+  }
   bound.count = scene.vertexCount;
   for (const auto& [name, semantic] : listing.uniforms)
     bound.uniforms[name] = scene.values.at(semantic);

@@ -63,7 +63,7 @@ void main() {
   t = f(position.x);
 }
 )"),
-                       "user.vert:6: a return before the end of a function"));
+                       "user.vert:6: a return before the end of f()"));
 }
 
 TEST(DerivedRefusal, ATextureLookupInTheVertexStageIsRefusedWithItsLine) {
