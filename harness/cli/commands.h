@@ -23,6 +23,7 @@ Command addDevicesCommand(CLI::App& app);
 Command addSweepCommand(CLI::App& app);
 Command addBenchCommand(CLI::App& app);
 Command addAdviseCommand(CLI::App& app);
+Command addInitCommand(CLI::App& app);
 
 // Each registered backend: its renderer and versions, or why it does not
 // come up here (asked of worker processes). Returns 0.

@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
        {snell::cli::addRunCommand, snell::cli::addListCommand, snell::cli::addEvalCommand,
         snell::cli::addBlessCommand, snell::cli::addMergeCommand, snell::cli::addCompareCommand,
         snell::cli::addReportCommand, snell::cli::addWorkerCommand, snell::cli::addDevicesCommand,
-        snell::cli::addSweepCommand, snell::cli::addBenchCommand, snell::cli::addAdviseCommand}) {
+        snell::cli::addSweepCommand, snell::cli::addBenchCommand, snell::cli::addAdviseCommand,
+        snell::cli::addInitCommand}) {
     const std::size_t before = app.get_subcommands({}).size();
     snell::cli::Command run = add(app);
     commands[app.get_subcommands({}).at(before)] = std::move(run);

@@ -28,6 +28,18 @@ class ManifestReader {
 
   static int lineOf(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
 
+  // `snell init` writes "FILL IN: <what>" where only the author knows the
+  // value; a manifest still holding one must not run on a guess.
+  void refusePlaceholder(const std::string& text, int line, std::string_view key) const {
+    static constexpr std::string_view kPlaceholder = "FILL IN";
+    if (text.rfind(kPlaceholder, 0) != 0) return;
+    std::string what(text.substr(kPlaceholder.size()));
+    what.erase(0, what.find_first_not_of(": "));
+    fail(line, fmt::format("`{}` is still the placeholder \"{}\" that snell init wrote: replace "
+                           "it with {} (the comment by it says what fits)",
+                           key, text, what.empty() ? "a value" : what));
+  }
+
   void onlyKeys(const toml::table& table, std::initializer_list<std::string_view> known,
                 std::string_view where) const {
     rejectUnknownKeys(table, known, path_, where);
@@ -38,7 +50,9 @@ class ManifestReader {
     if (!node)
       fail(tableLine, fmt::format("missing field `{}`; add it (see shaders/README.md)", key));
     if (!node->is_string()) fail(lineOf(*node), fmt::format("`{}` must be a string", key));
-    return std::string(*node->value<std::string>());
+    std::string text(*node->value<std::string>());
+    refusePlaceholder(text, lineOf(*node), key);
+    return text;
   }
 
   // `oracle = "name"`, `"derived"`, `["name", "derived"]`, or nothing (derived).
@@ -164,6 +178,7 @@ class ManifestReader {
       Binding binding{std::string(name.str()), std::string(), lineOf(value)};
       if (value.is_string()) {
         const std::string text(*value.value<std::string>());
+        refusePlaceholder(text, binding.line, binding.name);
         if (text == "default") {
           binding.apiDefault = true;
           out.push_back(std::move(binding));
@@ -361,10 +376,14 @@ class ManifestReader {
       m.captureVertex = stringArray(*vertex, "capture.vertex");
     if (const toml::node* fragment = capture.get("fragment"))
       m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
-    if (!m.captureVertex.empty() && !m.captureFragment.empty())
+    // A hand-written oracle mirrors one stage; the derived oracle follows
+    // the listing's text through both.
+    if (!m.captureVertex.empty() && !m.captureFragment.empty() && !m.oracle.empty())
       fail(lineOf(capture),
-           "`capture` lists both vertex outputs and fragment values; a listing "
-           "is checked at one stage: keep the one its oracle mirrors");
+           fmt::format("`capture` lists both vertex outputs and fragment values, and oracle `{}` "
+                       "mirrors one stage: keep the one it mirrors (the derived oracle alone "
+                       "may take both)",
+                       m.oracle));
     if (m.captureVertex.empty() && m.captureFragment.empty())
       fail(lineOf(capture),
            "`capture` names nothing to read back; list outputs in "

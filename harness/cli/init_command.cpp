@@ -1,0 +1,37 @@
+// snell init DIR: a first manifest for a folder of GLSL files
+// (core/manifest_draft.h), for the author to finish and run.
+#include <fmt/format.h>
+
+#include "cli/commands.h"
+#include "core/manifest_draft.h"
+
+namespace snell::cli {
+
+Command addInitCommand(CLI::App& app) {
+  CLI::App* init = app.add_subcommand(
+      "init", "Draft DIR/manifest.toml from the listing's GLSL files in DIR (derived oracle)");
+  struct Options {
+    DraftRequest request;
+    std::string dir;
+    bool force = false;
+  };
+  auto options = std::make_shared<Options>();
+  init->add_option("dir", options->dir, "Folder holding the listing's .vert and .frag files")
+      ->required();
+  init->add_option("--vertex", options->request.vertexFile,
+                   "The vertex stage file in DIR (default: the one *.vert)");
+  init->add_option("--fragment", options->request.fragmentFile,
+                   "The fragment stage file in DIR (default: the one *.frag, if any)");
+  init->add_option("--id", options->request.id,
+                   "The listing's id (default: DIR's parent and name, \"parent/name\")");
+  init->add_flag("--force", options->force, "Replace an existing DIR/manifest.toml");
+  return [options] {
+    options->request.dir = options->dir;
+    const std::filesystem::path path = writeDraftManifest(options->request, options->force);
+    fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
+               path.string(), options->dir);
+    return 0;
+  };
+}
+
+}  // namespace snell::cli

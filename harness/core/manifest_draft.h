@@ -1,0 +1,30 @@
+#pragma once
+// `snell init`: a first manifest for a folder of GLSL files, drafted from
+// the listing's declarations, so a user gates a shader without writing the
+// manifest from nothing. Inputs and uniforms are bound to scene semantics
+// where the names and types say which (core/shader_conventions.h); every
+// other one is written as a `"FILL IN: <type>"` line that loadManifest
+// refuses, naming its line, until the author replaces it. No `oracle` line:
+// the derived oracle follows the listing's own text.
+#include <filesystem>
+#include <string>
+
+namespace snell {
+
+struct DraftRequest {
+  std::filesystem::path dir;
+  std::string vertexFile;    // relative to dir; empty: the one *.vert file there
+  std::string fragmentFile;  // relative to dir; empty: the one *.frag file there, if any
+  std::string id;            // empty: the folder's parent and name ("learnopengl/refraction")
+};
+
+// The manifest text for the listing in request.dir. Throws UsageError (one
+// line: what is wrong, what to do) for a missing folder, no or several
+// candidate stage files, a stage without main(), or nothing to read back.
+std::string draftManifest(const DraftRequest& request);
+
+// Writes draftManifest() to dir/manifest.toml and returns its path; an
+// existing manifest is a UsageError unless `force`.
+std::filesystem::path writeDraftManifest(const DraftRequest& request, bool force);
+
+}  // namespace snell
