@@ -16,7 +16,7 @@ std::vector<std::filesystem::path> drawParetoChart(const BenchResults& results,
                                                    const std::string& metric,
                                                    const std::filesystem::path& dir);
 
-// The short name of a method: the last part of its id ("5-exact-fragment").
+// The short name of a method: the last part of its id ("6-exact-fragment").
 std::string shortMethodName(const std::string& id);
 
 }  // namespace snell::bench

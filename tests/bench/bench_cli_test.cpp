@@ -53,12 +53,13 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
         << "a mean above the 95th percentile needs a heavy tail: " << r["method"];
   }
   const std::vector<std::string> methods{"1-constant-mix", "2-empirical", "3-schlick-vertex",
-                                         "4-schlick-fragment", "5-exact-fragment"};
+                                         "4-schlick-fragment", "5-schlick-dense-side",
+                                         "6-exact-fragment"};
   for (const char* backend : {"gl", "vk"})
     for (const std::string& method : methods)
       EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
           << method << " on " << backend;
-  EXPECT_EQ(seen.size(), 10u);
+  EXPECT_EQ(seen.size(), 12u);
   EXPECT_GT(fs::file_size(dir_ / "pareto.svg"), 1000u);
   EXPECT_GT(fs::file_size(dir_ / "pareto.png"), 1000u);
   EXPECT_NE(run_->out.find("Pareto front"), std::string::npos) << run_->out;
@@ -79,9 +80,25 @@ TEST_F(BenchCli, ExactFresnelIsNearestTheReferenceAndTheConstantMixFarthest) {
         if (e < bestError) bestError = e, best = r["method"].get<std::string>();
         if (e > worstError) worstError = e, worst = r["method"].get<std::string>();
       }
-      EXPECT_EQ(best, "methods/fresnel/5-exact-fragment") << metric << " on " << backend;
+      EXPECT_EQ(best, "methods/fresnel/6-exact-fragment") << metric << " on " << backend;
       EXPECT_EQ(worst, "methods/fresnel/1-constant-mix") << metric << " on " << backend;
     }
+  }
+}
+
+// From air into glass the cosine on the less dense side is cos θi: the
+// dense-side rung must draw what plain Schlick per fragment draws.
+TEST_F(BenchCli, SchlickDenseSideEqualsSchlickWhenLightEntersTheGlass) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  for (const std::string backend : {"gl", "vk"}) {
+    double plain = -1, denseSide = -1;
+    for (const auto& r : results()["records"]) {
+      if (r["backend"] != backend) continue;
+      if (r["method"] == "methods/fresnel/4-schlick-fragment") plain = r["error"]["rms"];
+      if (r["method"] == "methods/fresnel/5-schlick-dense-side") denseSide = r["error"]["rms"];
+    }
+    ASSERT_GT(plain, 0.0) << backend;
+    EXPECT_NEAR(denseSide, plain, 1e-3 * plain) << backend;
   }
 }
 

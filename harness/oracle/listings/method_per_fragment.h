@@ -1,8 +1,8 @@
 #pragma once
 // The Fresnel method ladder's vertex stage, line by line over the number
-// type T: the eye-space position and normal that the per-fragment rungs (4 and 5)
+// type T: the eye-space position and normal that the per-fragment rungs (4 to 6)
 // pass on. The listing is shaders/methods/fresnel/4-schlick-fragment/per_fragment.vert
-// (rung 5 has the same file).
+// (rungs 5 and 6 have the same file).
 #include <memory>
 
 #include "oracle/glsl/glsl.h"
