@@ -29,6 +29,7 @@ json toJson(const BenchRecord& r) {
           {"title", r.title},
           {"backend", r.backend},
           {"renderer", r.renderer},
+          {"parameters", r.parameters},
           {"ms_per_frame", r.msPerFrame()},
           {"timings", timings},
           {"error",
@@ -47,6 +48,8 @@ BenchRecord fromJson(const json& j) {
   r.title = j.value("title", "");
   r.backend = j.at("backend").get<std::string>();
   r.renderer = j.value("renderer", "");
+  if (j.contains("parameters"))
+    r.parameters = j.at("parameters").get<std::map<std::string, double>>();
   for (const json& t : j.at("timings"))
     r.timings.push_back({t.at("width").get<int>(), t.at("height").get<int>(), t.value("repeats", 0),
                          t.at("median_ms").get<double>(), t.value("min_ms", 0.0),

@@ -7,6 +7,8 @@
 #include "bench/bench_record.h"
 #include "bench/bench_runner.h"
 #include "bench/bench_table.h"
+#include "bench/ladder_checks.h"
+#include "bench/wavelength_chart.h"
 #include "cli/commands.h"
 
 namespace snell::cli {
@@ -24,7 +26,8 @@ Command addBenchCommand(CLI::App& app) {
   auto options = std::make_shared<Options>();
   options->run.methodsDir = defaultMethodsDir();
   bench->add_option("--methods", options->run.methodsDir,
-                    "Folder of method manifests (default: the Fresnel ladder)");
+                    "Folder of method manifests (default: the Fresnel ladder; "
+                    "shaders/methods/dispersion is the dispersion ladder)");
   bench->add_option("--scene", options->run.scene, "Scene to draw (the reference models `sphere`)");
   bench->add_option("--backends", options->run.backends, "Backends to time, e.g. gl vk")
       ->delimiter(',');
@@ -34,6 +37,8 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',');
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution");
   bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw");
+  bench->add_option("--reference-wavelengths", options->run.referenceWavelengths,
+                    "Wavelengths of a dispersion ladder's spectral reference");
   bench->add_option("--out", options->out,
                     "Output folder: bench.json, pareto.svg, pareto.png, images/");
   bench->add_option("--metric", options->metric,
@@ -54,7 +59,20 @@ Command addBenchCommand(CLI::App& app) {
     bench::writeBenchResults(results, out / "bench.json");
     fmt::print("{}", bench::benchTable(results, options->metric));
     bench::drawParetoChart(results, options->metric, out);
-    fmt::print("wrote {0}/bench.json, {0}/pareto.svg, {0}/pareto.png\n", out.string());
+    std::string charts = fmt::format("{0}/pareto.svg, {0}/pareto.png", out.string());
+    if (bench::hasWavelengthCounts(results)) {
+      const auto violations = bench::wavelengthOrderViolations(results, options->metric,
+                                                               bench::errorNoise(options->metric));
+      if (violations.empty())
+        fmt::print(
+            "More wavelengths never moved a method away from the reference by more than "
+            "{:.3g} ({}).\n",
+            bench::errorNoise(options->metric), options->metric);
+      for (const std::string& v : violations) fmt::print("ORDER: {}\n", v);
+      bench::drawWavelengthChart(results, options->metric, out);
+      charts += fmt::format(", {0}/wavelengths.svg, {0}/wavelengths.png", out.string());
+    }
+    fmt::print("wrote {}/bench.json, {}\n", out.string(), charts);
     return 0;
   };
 }
