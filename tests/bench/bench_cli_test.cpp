@@ -52,9 +52,9 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
     EXPECT_LE(r["error"]["de_mean"].get<double>(), r["error"]["de_p95"].get<double>() + 1e-9)
         << "a mean above the 95th percentile needs a heavy tail: " << r["method"];
   }
-  const std::vector<std::string> methods{"1-constant-mix", "2-empirical", "3-schlick-vertex",
-                                         "4-schlick-fragment", "5-schlick-dense-side",
-                                         "6-exact-fragment"};
+  const std::vector<std::string> methods{"1-constant-mix",       "2-empirical",
+                                         "3-schlick-vertex",     "4-schlick-fragment",
+                                         "5-schlick-dense-side", "6-exact-fragment"};
   for (const char* backend : {"gl", "vk"})
     for (const std::string& method : methods)
       EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
@@ -90,9 +90,10 @@ TEST_F(BenchCli, ExactFresnelIsNearestTheReferenceAndTheConstantMixFarthest) {
 // dense-side rung must draw what plain Schlick per fragment draws.
 TEST_F(BenchCli, SchlickDenseSideEqualsSchlickWhenLightEntersTheGlass) {
   ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
   for (const std::string backend : {"gl", "vk"}) {
     double plain = -1, denseSide = -1;
-    for (const auto& r : results()["records"]) {
+    for (const auto& r : doc["records"]) {
       if (r["backend"] != backend) continue;
       if (r["method"] == "methods/fresnel/4-schlick-fragment") plain = r["error"]["rms"];
       if (r["method"] == "methods/fresnel/5-schlick-dense-side") denseSide = r["error"]["rms"];
