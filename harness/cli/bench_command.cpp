@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "bench/ablation.h"
 #include "bench/bench_chart.h"
 #include "bench/bench_record.h"
 #include "bench/bench_runner.h"
@@ -22,6 +23,7 @@ Command addBenchCommand(CLI::App& app) {
     bench::BenchOptions run;
     std::string out = defaultBenchDir();
     std::string metric = "de_mean";
+    bool ablation = true;
   };
   auto options = std::make_shared<Options>();
   options->run.methodsDir = defaultMethodsDir();
@@ -44,6 +46,8 @@ Command addBenchCommand(CLI::App& app) {
   bench->add_option("--metric", options->metric,
                     "Error on the chart's axis and for the table's front: rms, max, de_mean, "
                     "de_p95");
+  bench->add_flag("!--no-ablation", options->ablation,
+                  "Skip the ablation table of the physics reference");
   bench->footer(
       "Time per frame: a render (draw and RGBA32F read-back), median of warm repeats after the "
       "pipeline is compiled, with the 10th-90th percentile spread. Error: RMS and largest "
@@ -72,7 +76,15 @@ Command addBenchCommand(CLI::App& app) {
       bench::drawWavelengthChart(results, options->metric, out);
       charts += fmt::format(", {0}/wavelengths.svg, {0}/wavelengths.png", out.string());
     }
-    fmt::print("wrote {}/bench.json, {}\n", out.string(), charts);
+    std::string files = fmt::format("{}/bench.json", out.string());
+    if (options->ablation) {
+      const bench::AblationTable table =
+          bench::ablationTable(makeScene(options->run.scene), options->run.resolutions.back());
+      fmt::print("{}", bench::ablationText(table));
+      bench::writeAblationJson(table, out / "ablation.json");
+      files += fmt::format(", {}/ablation.json", out.string());
+    }
+    fmt::print("wrote {}, {}\n", files, charts);
     return 0;
   };
 }
