@@ -3,8 +3,8 @@
 // ray per colour channel, each with its own index (EtaR, EtaG, EtaB =
 // n1 / n2 from air into the glass), the Orange Book's values (Listing
 // 14.4). Each channel mixes its refracted and the reflected colour by the
-// exact unpolarised Fresnel reflectance at its own index (Born & Wolf 1.5.2), so only the dispersion differs from
-// the reference. Per fragment.
+// exact unpolarised Fresnel reflectance at its own index (Born & Wolf
+// 1.5.2), so only the dispersion differs from the reference. Per fragment.
 
 uniform samplerCube Cubemap;
 uniform mat4 TextureMatrix;

@@ -4,8 +4,8 @@
 // n1 / n2 from air into the glass), 1 / n at 650, 550 and 450 nm from
 // N-BK7's Sellmeier fit (SCHOTT data sheet). Each channel mixes its
 // refracted and the reflected colour by the exact unpolarised Fresnel
-// reflectance at its own index (Born & Wolf 1.5.2), so only the dispersion differs from
-// the reference. Per fragment.
+// reflectance at its own index (Born & Wolf 1.5.2), so only the
+// dispersion differs from the reference. Per fragment.
 
 uniform samplerCube Cubemap;
 uniform mat4 TextureMatrix;
