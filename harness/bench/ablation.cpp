@@ -22,7 +22,8 @@ constexpr double kIndex = 1.5;
 ReferenceImage tracedImage(const Scene& scene, int size, int internalHits) {
   const SphereView view(scene);
   const physics::Sphere sphere{view.centre(), 1.0, kIndex, 1.0};
-  ReferenceImage out{Image(size, size), std::vector<bool>(static_cast<std::size_t>(size) * size)};
+  ReferenceImage out{
+      Image(size, size), std::vector<bool>(static_cast<std::size_t>(size) * size), {}};
   view.forEachHit(size, size, [&](const SphereHit& hit) {
     const physics::SphereTrace trace =
         physics::traceSphere(sphere, physics::Vec3{}, hit.incident, {internalHits, 0.0});

@@ -14,7 +14,22 @@ namespace {
 
 using nlohmann::json;
 
+json errorJson(const ImageError& e) {
+  return {{"rms", e.rms},
+          {"max", e.max},
+          {"de_mean", e.deMean},
+          {"de_p95", e.deP95},
+          {"compared_pixels", e.compared}};
+}
+
 json toJson(const BenchRecord& r) {
+  json byAngle = json::array();
+  for (const AngleBin& bin : r.errorByAngle) {
+    json entry = errorJson(bin.error);
+    entry["from_deg"] = bin.fromDeg;
+    entry["to_deg"] = bin.toDeg;
+    byAngle.push_back(entry);
+  }
   json timings = json::array();
   for (const FrameTiming& t : r.timings)
     timings.push_back({{"width", t.width},
@@ -39,7 +54,8 @@ json toJson(const BenchRecord& r) {
             {"de_mean", r.error.deMean},
             {"de_p95", r.error.deP95},
             {"compared_pixels", r.error.compared},
-            {"coverage_mismatch_pixels", r.error.coverageMismatch}}}};
+            {"coverage_mismatch_pixels", r.error.coverageMismatch}}},
+          {"error_by_angle", byAngle}};
 }
 
 BenchRecord fromJson(const json& j) {
@@ -63,6 +79,15 @@ BenchRecord fromJson(const json& j) {
   r.error.deP95 = e.at("de_p95").get<double>();
   r.error.compared = e.value("compared_pixels", std::size_t{0});
   r.error.coverageMismatch = e.value("coverage_mismatch_pixels", std::size_t{0});
+  for (const json& bin : j.value("error_by_angle", json::array())) {
+    AngleBin b{bin.at("from_deg").get<double>(), bin.at("to_deg").get<double>(), {}};
+    b.error.rms = bin.at("rms").get<double>();
+    b.error.max = bin.at("max").get<double>();
+    b.error.deMean = bin.at("de_mean").get<double>();
+    b.error.deP95 = bin.at("de_p95").get<double>();
+    b.error.compared = bin.value("compared_pixels", std::size_t{0});
+    r.errorByAngle.push_back(b);
+  }
   return r;
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/angle_error.h"
 #include "bench/image_error.h"
 
 namespace snell::bench {
@@ -32,6 +33,7 @@ struct BenchRecord {
   std::vector<FrameTiming> timings;          // one per resolution, in the order asked
   ImageError error;                          // at the largest resolution
   int errorWidth = 0;
+  std::vector<AngleBin> errorByAngle;  // the same error, by angle of incidence
   // The largest resolution's median: the cost the chart and advisor use.
   double msPerFrame() const { return timings.empty() ? 0.0 : timings.back().medianMs; }
 };

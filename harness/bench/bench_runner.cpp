@@ -100,6 +100,7 @@ BenchResults runBench(const BenchOptions& options,
       const ReferenceImage& reference = references.imageFor(m);
       record.error = imageError(lastImage, reference.color, reference.covered);
       record.errorWidth = errorSize;
+      record.errorByAngle = errorByAngle(lastImage, reference);
       if (!options.imagesDir.empty()) {
         std::string stem = m.id;
         std::replace(stem.begin(), stem.end(), '/', '_');

@@ -1,6 +1,7 @@
 #include "bench/dispersion_reference_image.h"
 
 #include <array>
+#include <cmath>
 
 #include "bench/sphere_view.h"
 #include "oracle/physics/cie1931.h"
@@ -27,7 +28,8 @@ ReferenceImage dispersionReferenceImage(const Scene& scene, const physics::Sellm
   }
 
   ReferenceImage out{Image(width, height),
-                     std::vector<bool>(static_cast<std::size_t>(width) * height)};
+                     std::vector<bool>(static_cast<std::size_t>(width) * height),
+                     std::vector<float>(static_cast<std::size_t>(width) * height)};
   view.forEachHit(width, height, [&](const SphereHit& hit) {
     const Rgba reflectColor = view.environment(reflectDirection(hit.incident, hit.normal));
     std::array<double, 3> sum{};
@@ -42,6 +44,8 @@ ReferenceImage dispersionReferenceImage(const Scene& scene, const physics::Sellm
     for (int c = 0; c < 3; ++c) pixel[c] = static_cast<float>(sum[c] / total[c]);
     pixel[3] = 1.0f;
     out.covered[static_cast<std::size_t>(hit.y) * width + hit.x] = true;
+    out.incidenceDeg[static_cast<std::size_t>(hit.y) * width + hit.x] =
+        static_cast<float>(std::acos(hit.cosIncident) * 180.0 / M_PI);
   });
   return out;
 }

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "bench/ablation.h"
+#include "bench/angle_chart.h"
 #include "bench/bench_chart.h"
 #include "bench/bench_record.h"
 #include "bench/bench_runner.h"
@@ -63,7 +64,9 @@ Command addBenchCommand(CLI::App& app) {
     bench::writeBenchResults(results, out / "bench.json");
     fmt::print("{}", bench::benchTable(results, options->metric));
     bench::drawParetoChart(results, options->metric, out);
-    std::string charts = fmt::format("{0}/pareto.svg, {0}/pareto.png", out.string());
+    bench::drawAngleChart(results, options->metric, out);
+    std::string charts =
+        fmt::format("{0}/pareto.svg, {0}/pareto.png, {0}/angle.svg, {0}/angle.png", out.string());
     if (bench::hasWavelengthCounts(results)) {
       const auto violations = bench::wavelengthOrderViolations(results, options->metric,
                                                                bench::errorNoise(options->metric));

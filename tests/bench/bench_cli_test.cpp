@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -101,6 +103,36 @@ TEST_F(BenchCli, SchlickDenseSideEqualsSchlickWhenLightEntersTheGlass) {
     ASSERT_GT(plain, 0.0) << backend;
     EXPECT_NEAR(denseSide, plain, 1e-3 * plain) << backend;
   }
+}
+
+// The error by angle of incidence adds up to the whole image's error, and
+// near normal incidence (where R0 = 0.04, not the constant 0.1) the exact
+// method is far nearer physics than the constant mix.
+TEST_F(BenchCli, ErrorByAngleAddsUpAndTheConstantMixMissesNormalIncidence) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
+  std::map<std::pair<std::string, std::string>, double> nearNormal;
+  for (const auto& r : doc["records"]) {
+    const auto& bins = r["error_by_angle"];
+    ASSERT_EQ(bins.size(), 9u) << r["method"];
+    std::size_t pixels = 0;
+    double squares = 0;
+    for (const auto& bin : bins) {
+      const auto n = bin["compared_pixels"].get<std::size_t>();
+      pixels += n;
+      squares += n * std::pow(bin["rms"].get<double>(), 2);
+    }
+    const auto all = r["error"]["compared_pixels"].get<std::size_t>();
+    EXPECT_EQ(pixels, all) << r["method"];
+    EXPECT_NEAR(std::sqrt(squares / all), r["error"]["rms"].get<double>(), 1e-9) << r["method"];
+    nearNormal[{r["method"], r["backend"]}] = bins[0]["de_mean"].get<double>();
+  }
+  for (const std::string backend : {"gl", "vk"}) {
+    const double exact = nearNormal[std::make_pair("methods/fresnel/6-exact-fragment", backend)];
+    const double constant = nearNormal[std::make_pair("methods/fresnel/1-constant-mix", backend)];
+    EXPECT_LT(10 * exact, constant) << backend;
+  }
+  EXPECT_GT(fs::file_size(dir_ / "angle.svg"), 1000u);
 }
 
 TEST_F(BenchCli, AdviseReadsTheLastBenchAndAnswersInJson) {
