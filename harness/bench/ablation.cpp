@@ -7,38 +7,13 @@
 #include "bench/dispersion_reference_image.h"
 #include "bench/fresnel_reference_image.h"
 #include "bench/ladder_checks.h"
-#include "bench/sphere_view.h"
+#include "bench/sphere_trace_image.h"
 #include "core/atomic_file.h"
-#include "oracle/physics/analytic_sphere.h"
 
 namespace snell::bench {
 namespace {
 
 constexpr double kIndex = 1.5;
-
-// The sphere of index 1.5 with `internalHits` surface hits from inside
-// followed: every ray that leaves looks the environment up, weighted by the
-// energy it carries; the energy still inside when the trace stops is lost.
-ReferenceImage tracedImage(const Scene& scene, int size, int internalHits) {
-  const SphereView view(scene);
-  const physics::Sphere sphere{view.centre(), 1.0, kIndex, 1.0};
-  ReferenceImage out{
-      Image(size, size), std::vector<bool>(static_cast<std::size_t>(size) * size), {}};
-  view.forEachHit(size, size, [&](const SphereHit& hit) {
-    const physics::SphereTrace trace =
-        physics::traceSphere(sphere, physics::Vec3{}, hit.incident, {internalHits, 0.0});
-    double sum[3] = {0, 0, 0};
-    for (const physics::SphereExit& exit : trace.exits) {
-      const Rgba colour = view.environment(exit.direction);
-      for (int c = 0; c < 3; ++c) sum[c] += exit.weight * colour[c];
-    }
-    float* pixel = out.color.at(hit.x, hit.y);
-    for (int c = 0; c < 3; ++c) pixel[c] = static_cast<float>(sum[c]);
-    pixel[3] = 1.0f;
-    out.covered[static_cast<std::size_t>(hit.y) * size + hit.x] = true;
-  });
-  return out;
-}
 
 AblationRow row(std::string effect, const ReferenceImage& with, const ReferenceImage& without) {
   AblationRow r{std::move(effect), imageError(with.color, without.color, without.covered), false};
@@ -66,7 +41,7 @@ AblationTable ablationTable(const Scene& scene, int size, int internalHits, int 
   table.size = size;
   ReferenceImage previous = fresnelReferenceImage(scene, 1.0 / kIndex, size, size);
   for (int hits = 1; hits <= internalHits; ++hits) {
-    ReferenceImage next = tracedImage(scene, size, hits);
+    ReferenceImage next = sphereTraceImage(scene, kIndex, hits, size);
     table.geometric.push_back(row(hits == 1 ? std::string("second interface")
                                             : fmt::format("internal reflection {}", hits - 1),
                                   next, previous));

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "bench/dispersion_reference_image.h"
+#include "bench/sphere_trace_image.h"
 #include "core/errors.h"
 
 namespace snell::bench {
@@ -55,12 +56,23 @@ const physics::SellmeierGlass* manifestGlass(const Manifest& m) {
 
 LadderReference::LadderReference(const std::vector<Manifest>& methods, const Scene& scene, int size,
                                  int wavelengths) {
-  for (const Manifest& m : methods) dispersion_ = dispersion_ || namesSpectrum(m);
+  for (const Manifest& m : methods) {
+    dispersion_ = dispersion_ || namesSpectrum(m);
+    refraction_ = refraction_ || m.constants.count("InternalHits") > 0;
+  }
   if (!dispersion_) {
-    model_ = kFresnelReferenceModel;
+    model_ = refraction_ ? fmt::format("{} hits from inside: {}", kReferenceInternalHits,
+                                       kSphereTraceReferenceModel)
+                         : std::string(kFresnelReferenceModel);
     for (const Manifest& m : methods) {
       const double eta = etaOf(m);
-      if (!images_.count(eta)) images_.emplace(eta, fresnelReferenceImage(scene, eta, size, size));
+      if (images_.count(eta)) continue;
+      if (!(eta > 0.0 && eta < 1.0))
+        throw UsageError(fmt::format("{}:1: Eta {} is not n1/n2 from air into glass (0 < Eta < 1)",
+                                     m.path.string(), eta));
+      images_.emplace(eta, refraction_
+                               ? sphereTraceImage(scene, 1.0 / eta, kReferenceInternalHits, size)
+                               : fresnelReferenceImage(scene, eta, size, size));
     }
     return;
   }

@@ -3,7 +3,10 @@
 // from the methods' manifests: a ladder whose methods name a glass (the
 // Sellmeier terms B1..B4, C1..C4 in `constants`) or per-channel indices
 // (EtaR, EtaG, EtaB) is a dispersion ladder, measured against the spectral
-// reference of its glass; otherwise each method's `Eta` picks a Fresnel
+// reference of its glass; one whose methods give `InternalHits` is a
+// refraction ladder, measured against the sphere traced through both
+// interfaces and its internal reflections (bench/sphere_trace_image.h) at
+// each method's `Eta`; otherwise each method's `Eta` picks a Fresnel
 // reference.
 #include <map>
 #include <string>
@@ -35,6 +38,7 @@ class LadderReference {
 
  private:
   bool dispersion_ = false;
+  bool refraction_ = false;
   std::string model_;
   std::map<double, ReferenceImage> images_;  // by Eta; one entry (key 0) for dispersion
 };

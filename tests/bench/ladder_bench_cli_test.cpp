@@ -1,6 +1,6 @@
-// `snell bench` on the dispersion ladder as a user runs it, on a tiny image:
-// a record per method and backend, the wavelength chart, and the order
-// physics gives. Timing is never asserted.
+// `snell bench` on the dispersion and refraction ladders as a user runs
+// it, on a tiny image: a record per method and backend, the charts, and the
+// order physics gives. Timing is never asserted.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -63,6 +63,37 @@ TEST_F(DispersionBenchCli, MoreWavelengthsNeverMoveAwayAndTheBookIsFarthest) {
       EXPECT_EQ(worst, "methods/dispersion/1-rgb-book-etas") << metric << " on " << backend;
     }
   }
+}
+
+// The refraction ladder: each interface and internal reflection a method
+// follows brings it nearer the traced sphere, on every backend and metric.
+TEST(RefractionBenchCli, EachModelledInterfaceBringsAMethodNearer) {
+  const fs::path dir =
+      fs::temp_directory_path() / fmt::format("snell_refraction_bench_test.{}", getpid());
+  fs::remove_all(dir);
+  const Outcome run = runSnell(fmt::format(
+      "bench --methods {}/shaders/methods/refraction --resolutions 48 --repeats 1 --warmup 0 "
+      "--no-ablation --out {}",
+      SNELL_SOURCE_ROOT, dir.string()));
+  ASSERT_EQ(run.code, 0) << run.out;
+  const bench::BenchResults r = bench::readBenchResults(dir / "bench.json");
+  fs::remove_all(dir);
+  EXPECT_NE(r.reference.find("8 hits from inside"), std::string::npos) << r.reference;
+  ASSERT_EQ(r.records.size(), 6u);
+  const std::vector<std::string> ladder{"methods/refraction/1-one-interface",
+                                        "methods/refraction/2-two-interfaces",
+                                        "methods/refraction/3-internal-bounces"};
+  for (const std::string metric : {"rms", "de_mean", "de_p95"})
+    for (const char* backend : {"gl", "vk"}) {
+      std::vector<double> errors;
+      for (const std::string& method : ladder)
+        for (const bench::BenchRecord& record : r.records)
+          if (record.backend == backend && record.method == method)
+            errors.push_back(bench::errorMetric(record.error, metric));
+      ASSERT_EQ(errors.size(), 3u) << backend;
+      EXPECT_GT(errors[0], errors[1]) << metric << " on " << backend;
+      EXPECT_GT(errors[1], errors[2]) << metric << " on " << backend;
+    }
 }
 
 }  // namespace
