@@ -30,7 +30,9 @@ class BenchCli : public ::testing::Test {
     delete run_;
     fs::remove_all(dir_);
   }
-  static nlohmann::json results() { return nlohmann::json::parse(readText(dir_ / "bench.json")); }
+  static nlohmann::json results() {
+    return nlohmann::json::parse(readText(dir_ / "fresnel" / "bench.json"));
+  }
   static inline fs::path dir_;
   static inline Outcome* run_ = nullptr;
 };
@@ -62,8 +64,14 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
       EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
           << method << " on " << backend;
   EXPECT_EQ(seen.size(), 12u);
-  EXPECT_GT(fs::file_size(dir_ / "pareto.svg"), 1000u);
-  EXPECT_GT(fs::file_size(dir_ / "pareto.png"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.png"), 1000u);
+  // With no --methods every ladder runs, each into a folder of its own, and
+  // the ablation table is written beside them.
+  for (const char* ladder : {"dispersion", "refraction"})
+    EXPECT_TRUE(fs::exists(dir_ / ladder / "bench.json")) << ladder;
+  EXPECT_TRUE(fs::exists(dir_ / "ablation.json"));
+  EXPECT_NE(run_->out.find("ablation of the physics reference"), std::string::npos) << run_->out;
   EXPECT_NE(run_->out.find("Pareto front"), std::string::npos) << run_->out;
 }
 
@@ -132,12 +140,12 @@ TEST_F(BenchCli, ErrorByAngleAddsUpAndTheConstantMixMissesNormalIncidence) {
     const double constant = nearNormal[std::make_pair("methods/fresnel/1-constant-mix", backend)];
     EXPECT_LT(10 * exact, constant) << backend;
   }
-  EXPECT_GT(fs::file_size(dir_ / "angle.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "angle.svg"), 1000u);
 }
 
 TEST_F(BenchCli, AdviseReadsTheLastBenchAndAnswersInJson) {
   ASSERT_EQ(run_->code, 0) << run_->out;
-  const std::string results = (dir_ / "bench.json").string();
+  const std::string results = (dir_ / "fresnel" / "bench.json").string();
   // A budget nothing but a perfect method meets: exit 1, the nearest miss named.
   const Outcome none = runSnell("advise --scene sphere --budget 0 --results " + results);
   EXPECT_EQ(none.code, 1) << none.out;
@@ -160,6 +168,9 @@ TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
   Outcome o = runSnell("advise --scene sphere --budget 1 --results /nonexistent/bench.json");
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("run `snell bench` first"), std::string::npos) << o.out;
+  o = runSnell("advise --ladder nonexistent --scene sphere --budget 1");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("nonexistent/bench.json"), std::string::npos) << o.out;
   o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("analytic sphere"), std::string::npos) << o.out;
