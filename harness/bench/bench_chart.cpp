@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <fstream>
 #include <set>
 
@@ -10,13 +11,6 @@
 
 namespace snell::bench {
 namespace {
-
-const char* metricLabel(const std::string& metric) {
-  if (metric == "rms") return "RMS error, linear RGB";
-  if (metric == "max") return "largest channel error, linear RGB";
-  if (metric == "de_p95") return "95th percentile CIEDE2000";
-  return "mean CIEDE2000";
-}
 
 std::string plotCommands(const BenchResults& results, const std::string& metric,
                          const std::filesystem::path& dir, const std::string& terminal,
@@ -52,17 +46,35 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
   }
   return fmt::format(
       "set terminal {}\nset output '{}'\n"
-      "set title 'Fresnel methods on the {} scene: error against the physics reference vs time "
+      "set title '{} methods on the {} scene: error against the physics reference vs time "
       "per frame ({}px)' font ',10'\n"
       "set xlabel 'ms per frame (median of warm repeats)'\nset ylabel '{}'\n"
       "set logscale y\nset grid\nset key top right\nset offsets graph 0.05, graph 0.3, 0, 0\n"
       "plot {}",
-      terminal, output, results.scene,
-      results.records.empty() ? 0 : results.records.front().errorWidth, metricLabel(metric),
-      series);
+      terminal, output,
+      results.records.empty() ? std::string("no") : ladderName(results.records.front().method),
+      results.scene, results.records.empty() ? 0 : results.records.front().errorWidth,
+      errorMetricLabel(metric), series);
 }
 
 }  // namespace
+
+const char* errorMetricLabel(const std::string& metric) {
+  if (metric == "rms") return "RMS error, linear RGB";
+  if (metric == "max") return "largest channel error, linear RGB";
+  if (metric == "de_p95") return "95th percentile CIEDE2000";
+  return "mean CIEDE2000";
+}
+
+std::string ladderName(const std::string& id) {
+  const std::size_t last = id.rfind('/');
+  if (last == std::string::npos || last == 0) return id;
+  const std::size_t before = id.rfind('/', last - 1);
+  const std::string name = id.substr(before == std::string::npos ? 0 : before + 1,
+                                     last - (before == std::string::npos ? 0 : before + 1));
+  return name.empty() ? id
+                      : std::string(1, static_cast<char>(std::toupper(name[0]))) + name.substr(1);
+}
 
 std::string shortMethodName(const std::string& id) {
   const std::size_t slash = id.rfind('/');

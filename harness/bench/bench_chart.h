@@ -16,7 +16,13 @@ std::vector<std::filesystem::path> drawParetoChart(const BenchResults& results,
                                                    const std::string& metric,
                                                    const std::filesystem::path& dir);
 
-// The short name of a method: the last part of its id ("5-exact-fragment").
+// The axis label of an error metric ("mean CIEDE2000").
+const char* errorMetricLabel(const std::string& metric);
+
+// The ladder a method belongs to: the middle part of "methods/fresnel/x".
+std::string ladderName(const std::string& id);
+
+// The short name of a method: the last part of its id ("6-exact-fragment").
 std::string shortMethodName(const std::string& id);
 
 }  // namespace snell::bench

@@ -14,7 +14,22 @@ namespace {
 
 using nlohmann::json;
 
+json errorJson(const ImageError& e) {
+  return {{"rms", e.rms},
+          {"max", e.max},
+          {"de_mean", e.deMean},
+          {"de_p95", e.deP95},
+          {"compared_pixels", e.compared}};
+}
+
 json toJson(const BenchRecord& r) {
+  json byAngle = json::array();
+  for (const AngleBin& bin : r.errorByAngle) {
+    json entry = errorJson(bin.error);
+    entry["from_deg"] = bin.fromDeg;
+    entry["to_deg"] = bin.toDeg;
+    byAngle.push_back(entry);
+  }
   json timings = json::array();
   for (const FrameTiming& t : r.timings)
     timings.push_back({{"width", t.width},
@@ -29,6 +44,7 @@ json toJson(const BenchRecord& r) {
           {"title", r.title},
           {"backend", r.backend},
           {"renderer", r.renderer},
+          {"parameters", r.parameters},
           {"ms_per_frame", r.msPerFrame()},
           {"timings", timings},
           {"error",
@@ -38,7 +54,8 @@ json toJson(const BenchRecord& r) {
             {"de_mean", r.error.deMean},
             {"de_p95", r.error.deP95},
             {"compared_pixels", r.error.compared},
-            {"coverage_mismatch_pixels", r.error.coverageMismatch}}}};
+            {"coverage_mismatch_pixels", r.error.coverageMismatch}}},
+          {"error_by_angle", byAngle}};
 }
 
 BenchRecord fromJson(const json& j) {
@@ -47,6 +64,8 @@ BenchRecord fromJson(const json& j) {
   r.title = j.value("title", "");
   r.backend = j.at("backend").get<std::string>();
   r.renderer = j.value("renderer", "");
+  if (j.contains("parameters"))
+    r.parameters = j.at("parameters").get<std::map<std::string, double>>();
   for (const json& t : j.at("timings"))
     r.timings.push_back({t.at("width").get<int>(), t.at("height").get<int>(), t.value("repeats", 0),
                          t.at("median_ms").get<double>(), t.value("min_ms", 0.0),
@@ -60,6 +79,15 @@ BenchRecord fromJson(const json& j) {
   r.error.deP95 = e.at("de_p95").get<double>();
   r.error.compared = e.value("compared_pixels", std::size_t{0});
   r.error.coverageMismatch = e.value("coverage_mismatch_pixels", std::size_t{0});
+  for (const json& bin : j.value("error_by_angle", json::array())) {
+    AngleBin b{bin.at("from_deg").get<double>(), bin.at("to_deg").get<double>(), {}};
+    b.error.rms = bin.at("rms").get<double>();
+    b.error.max = bin.at("max").get<double>();
+    b.error.deMean = bin.at("de_mean").get<double>();
+    b.error.deP95 = bin.at("de_p95").get<double>();
+    b.error.compared = bin.value("compared_pixels", std::size_t{0});
+    r.errorByAngle.push_back(b);
+  }
   return r;
 }
 

@@ -2,9 +2,11 @@
 // What `snell bench` measures, and its JSON form (what `snell advise`
 // reads back). One record per method and backend.
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "bench/angle_error.h"
 #include "bench/image_error.h"
 
 namespace snell::bench {
@@ -27,9 +29,11 @@ struct BenchRecord {
   std::string title;
   std::string backend;  // "gl", "vk"
   std::string renderer;
-  std::vector<FrameTiming> timings;  // one per resolution, in the order asked
-  ImageError error;                  // at the largest resolution
+  std::map<std::string, double> parameters;  // the manifest's constants (Eta, Wavelengths, ...)
+  std::vector<FrameTiming> timings;          // one per resolution, in the order asked
+  ImageError error;                          // at the largest resolution
   int errorWidth = 0;
+  std::vector<AngleBin> errorByAngle;  // the same error, by angle of incidence
   // The largest resolution's median: the cost the chart and advisor use.
   double msPerFrame() const { return timings.empty() ? 0.0 : timings.back().medianMs; }
 };

@@ -7,7 +7,7 @@
 #include <map>
 
 #include "backends/backend.h"
-#include "bench/fresnel_reference_image.h"
+#include "bench/ladder_reference.h"
 #include "compare/image_io.h"
 #include "core/case.h"
 #include "core/errors.h"
@@ -17,16 +17,6 @@
 
 namespace snell::bench {
 namespace {
-
-double etaOf(const Manifest& m) {
-  const auto eta = m.constants.find("Eta");
-  if (eta == m.constants.end())
-    throw UsageError(
-        fmt::format("{}:1: a method needs `constants = {{ Eta = ... }}` (n1/n2 from "
-                    "air into the glass) for the physics reference",
-                    m.path.string()));
-  return eta->second;
-}
 
 Image renderOrThrow(Backend& backend, const RenderJob& job, const Manifest& m) {
   RenderOutcome outcome = backend.render(job);
@@ -67,6 +57,9 @@ void checkOptions(const BenchOptions& options) {
   if (options.repeats < 1) throw UsageError("--repeats: time at least one frame");
   if (options.warmup < 0) throw UsageError("--warmup: cannot be negative");
   if (options.backends.empty()) throw UsageError("--backends: give at least one backend");
+  if (options.referenceWavelengths < 1 || options.referenceWavelengths > 4096)
+    throw UsageError(fmt::format("reference wavelengths: {} is outside 1 to 4096",
+                                 options.referenceWavelengths));
 }
 
 }  // namespace
@@ -83,13 +76,8 @@ BenchResults runBench(const BenchOptions& options,
 
   BenchResults results;
   results.scene = options.scene;
-  results.reference = kFresnelReferenceModel;
-  std::map<double, ReferenceImage> references;  // by eta, at the error resolution
-  for (const Manifest& m : methods) {
-    const double eta = etaOf(m);
-    if (!references.count(eta))
-      references.emplace(eta, fresnelReferenceImage(baseScene, eta, errorSize, errorSize));
-  }
+  const LadderReference references(methods, baseScene, errorSize, options.referenceWavelengths);
+  results.reference = references.model();
 
   for (const std::string& backendName : options.backends) {
     std::unique_ptr<Backend> backend = makeBackend(backendName, {});
@@ -99,6 +87,7 @@ BenchResults runBench(const BenchOptions& options,
       record.title = m.title;
       record.backend = backend->name();
       record.renderer = backend->driverInfo().renderer;
+      record.parameters = std::map<std::string, double>(m.constants.begin(), m.constants.end());
       Image lastImage;
       for (int size : options.resolutions) {
         Scene scene = baseScene;
@@ -108,9 +97,10 @@ BenchResults runBench(const BenchOptions& options,
         record.timings.push_back(timeFrames(*backend, job, m, options));
         if (size == errorSize) lastImage = renderOrThrow(*backend, job, m);
       }
-      const ReferenceImage& reference = references.at(etaOf(m));
+      const ReferenceImage& reference = references.imageFor(m);
       record.error = imageError(lastImage, reference.color, reference.covered);
       record.errorWidth = errorSize;
+      record.errorByAngle = errorByAngle(lastImage, reference);
       if (!options.imagesDir.empty()) {
         std::string stem = m.id;
         std::replace(stem.begin(), stem.end(), '/', '_');
@@ -123,8 +113,7 @@ BenchResults runBench(const BenchOptions& options,
     }
   }
   if (!options.imagesDir.empty())
-    writeImageAtomically(options.imagesDir / "physics_reference.exr",
-                         references.begin()->second.color);
+    writeImageAtomically(options.imagesDir / "physics_reference.exr", references.first().color);
   return results;
 }
 

@@ -3,7 +3,8 @@
 // the scene at each resolution; its time per frame is the median of warm
 // repeats (the pipeline compiled and a few frames drawn first), and its
 // error is its image held against the physics reference at the largest
-// resolution.
+// resolution. Which reference a ladder needs is read from its manifests
+// (bench/ladder_reference.h).
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -20,6 +21,8 @@ struct BenchOptions {
   std::vector<int> resolutions{128, 256, 512};  // square images
   int warmup = 3;                               // untimed frames after the first draw
   int repeats = 15;                             // timed frames per resolution
+  // Wavelengths of a dispersion ladder's spectral reference.
+  int referenceWavelengths = 128;
   // The pixels each backend drew at the largest resolution go here (EXR),
   // when not empty.
   std::filesystem::path imagesDir;

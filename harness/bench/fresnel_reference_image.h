@@ -25,6 +25,9 @@ inline constexpr const char* kFresnelReferenceModel =
 struct ReferenceImage {
   Image color;                // linear RGB, alpha 1 where the sphere is hit
   std::vector<bool> covered;  // per pixel: the ray meets the sphere
+  // Per pixel, the angle of incidence at the first interface in degrees
+  // (where covered; empty when the reference does not give it).
+  std::vector<float> incidenceDeg;
 };
 
 // The scene must be the sphere scene (a unit sphere at the model origin

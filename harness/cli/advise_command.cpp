@@ -36,7 +36,8 @@ Command addAdviseCommand(CLI::App& app) {
     std::string scene;
     double budget = 0;
     std::string metric = "de_mean";
-    std::string results = defaultBenchDir() + "/bench.json";
+    std::string ladder = "fresnel";
+    std::string results;
     std::string backend;
     bool json = false;
   };
@@ -47,12 +48,19 @@ Command addAdviseCommand(CLI::App& app) {
       ->add_option("--budget", options->budget, "The largest error allowed, in the metric's units")
       ->required();
   advise->add_option("--metric", options->metric, "rms, max, de_mean (default) or de_p95");
-  advise->add_option("--results", options->results, "A `snell bench` bench.json");
+  advise->add_option("--ladder", options->ladder,
+                     "The method ladder: fresnel (default), dispersion or refraction; its results "
+                     "are read from " +
+                         defaultBenchDir() + "/LADDER/bench.json");
+  advise->add_option("--results", options->results,
+                     "A `snell bench` bench.json (in place of the ladder's default)");
   advise->add_option("--backend", options->backend, "Only this backend (default: each measured)");
   advise->add_flag("--json", options->json, "One JSON object on standard output, for scripts");
   advise->footer("Exit code 0 when every backend has a method within budget, 1 when one has none.");
   return [options] {
-    const bench::BenchResults results = bench::readBenchResults(options->results);
+    const bench::BenchResults results = bench::readBenchResults(
+        options->results.empty() ? defaultBenchDir() + "/" + options->ladder + "/bench.json"
+                                 : options->results);
     const std::vector<bench::Advice> advice =
         bench::advise(results, options->scene, options->budget, options->metric, options->backend);
     bool allMet = true;

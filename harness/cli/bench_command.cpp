@@ -1,15 +1,65 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
+#include "bench/ablation.h"
+#include "bench/angle_chart.h"
 #include "bench/bench_chart.h"
 #include "bench/bench_record.h"
 #include "bench/bench_runner.h"
 #include "bench/bench_table.h"
+#include "bench/ladder_checks.h"
+#include "bench/wavelength_chart.h"
 #include "cli/commands.h"
+#include "core/errors.h"
 
 namespace snell::cli {
+
+namespace {
+
+// A folder with a method manifest one level down.
+bool isLadder(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir))
+    throw UsageError(fmt::format("{}: no such folder of methods", dir.string()));
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    if (entry.is_directory() && std::filesystem::exists(entry.path() / "manifest.toml"))
+      return true;
+  return false;
+}
+
+// Measures one ladder into `out`: bench.json, its table, its charts; returns
+// the line naming what it wrote.
+std::string benchLadder(bench::BenchOptions run, const std::filesystem::path& out,
+                        const std::string& metric) {
+  std::filesystem::create_directories(out / "images");
+  run.imagesDir = out / "images";
+  const bench::BenchResults results =
+      bench::runBench(run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
+  bench::writeBenchResults(results, out / "bench.json");
+  fmt::print("{}", bench::benchTable(results, metric));
+  bench::drawParetoChart(results, metric, out);
+  bench::drawAngleChart(results, metric, out);
+  std::string charts =
+      fmt::format("{0}/pareto.svg, {0}/pareto.png, {0}/angle.svg, {0}/angle.png", out.string());
+  if (bench::hasWavelengthCounts(results)) {
+    const double noise = bench::errorNoise(metric);
+    const auto violations = bench::wavelengthOrderViolations(results, metric, noise);
+    if (violations.empty())
+      fmt::print(
+          "More wavelengths never moved a method away from the reference by more than "
+          "{:.3g} ({}).\n",
+          noise, metric);
+    for (const std::string& v : violations) fmt::print("ORDER: {}\n", v);
+    bench::drawWavelengthChart(results, metric, out);
+    charts += fmt::format(", {0}/wavelengths.svg, {0}/wavelengths.png", out.string());
+  }
+  fmt::print("\n");
+  return fmt::format("wrote {}/bench.json, {}\n", out.string(), charts);
+}
+
+}  // namespace
 
 Command addBenchCommand(CLI::App& app) {
   CLI::App* bench = app.add_subcommand(
@@ -20,11 +70,14 @@ Command addBenchCommand(CLI::App& app) {
     bench::BenchOptions run;
     std::string out = defaultBenchDir();
     std::string metric = "de_mean";
+    bool ablation = true;
   };
   auto options = std::make_shared<Options>();
   options->run.methodsDir = defaultMethodsDir();
   bench->add_option("--methods", options->run.methodsDir,
-                    "Folder of method manifests (default: the Fresnel ladder)");
+                    "A ladder (a folder of method folders, e.g. shaders/methods/dispersion) or a "
+                    "folder of ladders, each written to OUT/LADDER (default: shaders/methods, "
+                    "every ladder)");
   bench->add_option("--scene", options->run.scene, "Scene to draw (the reference models `sphere`)");
   bench->add_option("--backends", options->run.backends, "Backends to time, e.g. gl vk")
       ->delimiter(',');
@@ -34,11 +87,16 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',');
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution");
   bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw");
+  bench->add_option("--reference-wavelengths", options->run.referenceWavelengths,
+                    "Wavelengths of a dispersion ladder's spectral reference");
   bench->add_option("--out", options->out,
-                    "Output folder: bench.json, pareto.svg, pareto.png, images/");
+                    "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
+                    "wavelengths.svg/png, images/; ablation.json");
   bench->add_option("--metric", options->metric,
                     "Error on the chart's axis and for the table's front: rms, max, de_mean, "
                     "de_p95");
+  bench->add_flag("!--no-ablation", options->ablation,
+                  "Skip the ablation table of the physics reference");
   bench->footer(
       "Time per frame: a render (draw and RGBA32F read-back), median of warm repeats after the "
       "pipeline is compiled, with the 10th-90th percentile spread. Error: RMS and largest "
@@ -47,14 +105,34 @@ Command addBenchCommand(CLI::App& app) {
   return [options] {
     bench::errorMetric({}, options->metric);  // refuse an unknown metric before drawing
     const std::filesystem::path out = options->out;
-    std::filesystem::create_directories(out / "images");
-    options->run.imagesDir = out / "images";
-    const bench::BenchResults results = bench::runBench(
-        options->run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
-    bench::writeBenchResults(results, out / "bench.json");
-    fmt::print("{}", bench::benchTable(results, options->metric));
-    bench::drawParetoChart(results, options->metric, out);
-    fmt::print("wrote {0}/bench.json, {0}/pareto.svg, {0}/pareto.png\n", out.string());
+    // A folder of ladders (each a folder of method folders) runs each into
+    // a folder of its own; a folder of methods is one ladder.
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> ladders;
+    if (isLadder(options->run.methodsDir)) {
+      ladders.push_back({options->run.methodsDir, out});
+    } else {
+      for (const auto& entry : std::filesystem::directory_iterator(options->run.methodsDir))
+        if (entry.is_directory() && isLadder(entry.path()))
+          ladders.push_back({entry.path(), out / entry.path().filename()});
+      std::sort(ladders.begin(), ladders.end());
+    }
+    if (ladders.empty())
+      throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
+                                   options->run.methodsDir.string()));
+    std::string files;
+    for (const auto& [methods, dir] : ladders) {
+      bench::BenchOptions run = options->run;
+      run.methodsDir = methods;
+      files += benchLadder(run, dir, options->metric);
+    }
+    if (options->ablation) {
+      const bench::AblationTable table =
+          bench::ablationTable(makeScene(options->run.scene), options->run.resolutions.back());
+      fmt::print("{}", bench::ablationText(table));
+      bench::writeAblationJson(table, out / "ablation.json");
+      files += fmt::format("wrote {}/ablation.json\n", out.string());
+    }
+    fmt::print("{}", files);
     return 0;
   };
 }

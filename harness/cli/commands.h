@@ -32,8 +32,8 @@ int printBackendDrivers(const std::vector<std::string>& workerArgs);
 // The repository's own listings and goldens, where the binary was built from.
 std::string defaultShadersDir();
 std::string defaultGoldenDir();
-// The Fresnel method ladder, and where `snell bench` writes (and `snell
-// advise` reads) by default.
+// The method ladders (one folder each), and where `snell bench` writes
+// (and `snell advise` reads, one folder per ladder) by default.
 std::string defaultMethodsDir();
 std::string defaultBenchDir();
 

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -28,7 +30,9 @@ class BenchCli : public ::testing::Test {
     delete run_;
     fs::remove_all(dir_);
   }
-  static nlohmann::json results() { return nlohmann::json::parse(readText(dir_ / "bench.json")); }
+  static nlohmann::json results() {
+    return nlohmann::json::parse(readText(dir_ / "fresnel" / "bench.json"));
+  }
   static inline fs::path dir_;
   static inline Outcome* run_ = nullptr;
 };
@@ -52,15 +56,22 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
     EXPECT_LE(r["error"]["de_mean"].get<double>(), r["error"]["de_p95"].get<double>() + 1e-9)
         << "a mean above the 95th percentile needs a heavy tail: " << r["method"];
   }
-  const std::vector<std::string> methods{"1-constant-mix", "2-empirical", "3-schlick-vertex",
-                                         "4-schlick-fragment", "5-exact-fragment"};
+  const std::vector<std::string> methods{"1-constant-mix",       "2-empirical",
+                                         "3-schlick-vertex",     "4-schlick-fragment",
+                                         "5-schlick-dense-side", "6-exact-fragment"};
   for (const char* backend : {"gl", "vk"})
     for (const std::string& method : methods)
       EXPECT_TRUE(seen.count({"methods/fresnel/" + method, backend}))
           << method << " on " << backend;
-  EXPECT_EQ(seen.size(), 10u);
-  EXPECT_GT(fs::file_size(dir_ / "pareto.svg"), 1000u);
-  EXPECT_GT(fs::file_size(dir_ / "pareto.png"), 1000u);
+  EXPECT_EQ(seen.size(), 12u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.png"), 1000u);
+  // With no --methods every ladder runs, each into a folder of its own, and
+  // the ablation table is written beside them.
+  for (const char* ladder : {"dispersion", "refraction"})
+    EXPECT_TRUE(fs::exists(dir_ / ladder / "bench.json")) << ladder;
+  EXPECT_TRUE(fs::exists(dir_ / "ablation.json"));
+  EXPECT_NE(run_->out.find("ablation of the physics reference"), std::string::npos) << run_->out;
   EXPECT_NE(run_->out.find("Pareto front"), std::string::npos) << run_->out;
 }
 
@@ -79,15 +90,62 @@ TEST_F(BenchCli, ExactFresnelIsNearestTheReferenceAndTheConstantMixFarthest) {
         if (e < bestError) bestError = e, best = r["method"].get<std::string>();
         if (e > worstError) worstError = e, worst = r["method"].get<std::string>();
       }
-      EXPECT_EQ(best, "methods/fresnel/5-exact-fragment") << metric << " on " << backend;
+      EXPECT_EQ(best, "methods/fresnel/6-exact-fragment") << metric << " on " << backend;
       EXPECT_EQ(worst, "methods/fresnel/1-constant-mix") << metric << " on " << backend;
     }
   }
 }
 
+// From air into glass the cosine on the less dense side is cos θi: the
+// dense-side rung must draw what plain Schlick per fragment draws.
+TEST_F(BenchCli, SchlickDenseSideEqualsSchlickWhenLightEntersTheGlass) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
+  for (const std::string backend : {"gl", "vk"}) {
+    double plain = -1, denseSide = -1;
+    for (const auto& r : doc["records"]) {
+      if (r["backend"] != backend) continue;
+      if (r["method"] == "methods/fresnel/4-schlick-fragment") plain = r["error"]["rms"];
+      if (r["method"] == "methods/fresnel/5-schlick-dense-side") denseSide = r["error"]["rms"];
+    }
+    ASSERT_GT(plain, 0.0) << backend;
+    EXPECT_NEAR(denseSide, plain, 1e-3 * plain) << backend;
+  }
+}
+
+// The error by angle of incidence adds up to the whole image's error, and
+// near normal incidence (where R0 = 0.04, not the constant 0.1) the exact
+// method is far nearer physics than the constant mix.
+TEST_F(BenchCli, ErrorByAngleAddsUpAndTheConstantMixMissesNormalIncidence) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const nlohmann::json doc = results();
+  std::map<std::pair<std::string, std::string>, double> nearNormal;
+  for (const auto& r : doc["records"]) {
+    const auto& bins = r["error_by_angle"];
+    ASSERT_EQ(bins.size(), 9u) << r["method"];
+    std::size_t pixels = 0;
+    double squares = 0;
+    for (const auto& bin : bins) {
+      const auto n = bin["compared_pixels"].get<std::size_t>();
+      pixels += n;
+      squares += n * std::pow(bin["rms"].get<double>(), 2);
+    }
+    const auto all = r["error"]["compared_pixels"].get<std::size_t>();
+    EXPECT_EQ(pixels, all) << r["method"];
+    EXPECT_NEAR(std::sqrt(squares / all), r["error"]["rms"].get<double>(), 1e-9) << r["method"];
+    nearNormal[{r["method"], r["backend"]}] = bins[0]["de_mean"].get<double>();
+  }
+  for (const std::string backend : {"gl", "vk"}) {
+    const double exact = nearNormal[std::make_pair("methods/fresnel/6-exact-fragment", backend)];
+    const double constant = nearNormal[std::make_pair("methods/fresnel/1-constant-mix", backend)];
+    EXPECT_LT(10 * exact, constant) << backend;
+  }
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "angle.svg"), 1000u);
+}
+
 TEST_F(BenchCli, AdviseReadsTheLastBenchAndAnswersInJson) {
   ASSERT_EQ(run_->code, 0) << run_->out;
-  const std::string results = (dir_ / "bench.json").string();
+  const std::string results = (dir_ / "fresnel" / "bench.json").string();
   // A budget nothing but a perfect method meets: exit 1, the nearest miss named.
   const Outcome none = runSnell("advise --scene sphere --budget 0 --results " + results);
   EXPECT_EQ(none.code, 1) << none.out;
@@ -110,6 +168,9 @@ TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
   Outcome o = runSnell("advise --scene sphere --budget 1 --results /nonexistent/bench.json");
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("run `snell bench` first"), std::string::npos) << o.out;
+  o = runSnell("advise --ladder nonexistent --scene sphere --budget 1");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("nonexistent/bench.json"), std::string::npos) << o.out;
   o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("analytic sphere"), std::string::npos) << o.out;

@@ -1,8 +1,10 @@
 #pragma once
-// The Fresnel method ladder's vertex stage, line by line over the number
-// type T: the eye-space position and normal that the per-fragment rungs (4 and 5)
-// pass on. The listing is shaders/methods/fresnel/4-schlick-fragment/per_fragment.vert
-// (rung 5 has the same file).
+// The method ladders' per-fragment vertex stage, line by line over the
+// number type T: the eye-space position and normal that the per-fragment
+// rungs pass on. The listing is
+// shaders/methods/fresnel/4-schlick-fragment/per_fragment.vert (Fresnel
+// rungs 5 and 6, and every dispersion and refraction rung, have the same
+// code).
 #include <memory>
 
 #include "oracle/glsl/glsl.h"

@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 1 of 5): one reflectance
+// Written for snell (Fresnel method ladder, rung 1 of 6): one reflectance
 // for every angle. 0.1 is near the exact reflectance of glass (index 1.5)
 // averaged over the hemisphere (0.092).
 

@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 1 of 5): the reflected and
+// Written for snell (Fresnel method ladder, rung 1 of 6): the reflected and
 // refracted directions per vertex, as the Orange Book computes them.
 
 in vec4      MCvertex;

@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 2 of 5): the empirical
+// Written for snell (Fresnel method ladder, rung 2 of 6): the empirical
 // reflectance bias + scale * pow(1 + dot(I, N), power) of the Shadertoy post
 // "Reflections and Refractions", with its hand-tweaked constants, per vertex.
 

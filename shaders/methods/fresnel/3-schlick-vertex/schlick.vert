@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 3 of 5): Schlick's
+// Written for snell (Fresnel method ladder, rung 3 of 6): Schlick's
 // approximation per vertex, the Orange Book's way (Listing 14.1), with the
 // index of glass (1.5) in place of the book's Eta = 0.66.
 

@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 4 of 5): Schlick's
+// Written for snell (Fresnel method ladder, rung 4 of 6): Schlick's
 // approximation, the reflected and refracted directions per fragment.
 
 uniform samplerCube Cubemap;

@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rung 5 of 5): the exact Fresnel
+// Written for snell (Fresnel method ladder, rung 6 of 6): the exact Fresnel
 // equations for unpolarised light (Born & Wolf 1.5.2), R = (Rs + Rp) / 2,
 // per fragment. Light goes from air (n1 = 1) into glass (n2 = 1 / Eta).
 

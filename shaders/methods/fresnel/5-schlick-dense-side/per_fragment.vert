@@ -1,5 +1,5 @@
 #version 140
-// Written for snell (Fresnel method ladder, rungs 4 and 5): the eye-space
+// Written for snell (Fresnel method ladder, rungs 4 to 6): the eye-space
 // position and normal, for a fragment stage that does all the optics.
 
 in vec4      MCvertex;

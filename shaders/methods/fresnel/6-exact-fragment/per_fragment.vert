@@ -1,0 +1,22 @@
+#version 140
+// Written for snell (Fresnel method ladder, rungs 4 to 6): the eye-space
+// position and normal, for a fragment stage that does all the optics.
+
+in vec4      MCvertex;
+in vec3      MCnormal;
+
+uniform mat4 MVMatrix;
+uniform mat4 MVPMatrix;
+uniform mat3 NormalMatrix;
+
+out vec3 EyePosition;
+out vec3 EyeNormal;
+
+void main()
+{
+    vec4 ecPosition = MVMatrix * MCvertex;
+    EyePosition = ecPosition.xyz / ecPosition.w;
+    EyeNormal   = normalize(NormalMatrix * MCnormal);
+
+    gl_Position = MVPMatrix * MCvertex;
+}

@@ -1,0 +1,100 @@
+// `snell bench` on the dispersion and refraction ladders as a user runs
+// it, on a tiny image: a record per method and backend, the charts, and the
+// order physics gives. Timing is never asserted.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "../cli/snell_process.h"
+#include "bench/bench_record.h"
+#include "bench/ladder_checks.h"
+
+namespace snell::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+class DispersionBenchCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / fmt::format("snell_dispersion_bench_test.{}", getpid());
+    fs::remove_all(dir_);
+    run_ = new Outcome(runSnell(fmt::format(
+        "bench --methods {}/shaders/methods/dispersion --resolutions 48 --repeats 1 --warmup 0 "
+        "--reference-wavelengths 64 --out {}",
+        SNELL_SOURCE_ROOT, dir_.string())));
+  }
+  static void TearDownTestSuite() {
+    delete run_;
+    fs::remove_all(dir_);
+  }
+  static bench::BenchResults results() { return bench::readBenchResults(dir_ / "bench.json"); }
+  static inline fs::path dir_;
+  static inline Outcome* run_ = nullptr;
+};
+
+TEST_F(DispersionBenchCli, WritesEveryMethodOnEveryBackendAndTheWavelengthChart) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const bench::BenchResults r = results();
+  EXPECT_NE(r.reference.find("N-BK7, 64 wavelengths"), std::string::npos) << r.reference;
+  EXPECT_EQ(r.records.size(), 12u);
+  for (const bench::BenchRecord& record : r.records)
+    EXPECT_FALSE(record.parameters.empty()) << record.method;
+  EXPECT_GT(fs::file_size(dir_ / "wavelengths.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "wavelengths.png"), 1000u);
+}
+
+// Physics: more wavelengths never move away from the reference beyond the
+// noise, and the book's exaggerated, reversed indices are the farthest.
+TEST_F(DispersionBenchCli, MoreWavelengthsNeverMoveAwayAndTheBookIsFarthest) {
+  ASSERT_EQ(run_->code, 0) << run_->out;
+  const bench::BenchResults r = results();
+  for (const std::string metric : {"rms", "de_mean", "de_p95"}) {
+    const auto violations = bench::wavelengthOrderViolations(r, metric, bench::errorNoise(metric));
+    EXPECT_TRUE(violations.empty()) << metric << ": " << violations.front();
+    for (const char* backend : {"gl", "vk"}) {
+      std::string worst;
+      double worstError = -1;
+      for (const bench::BenchRecord& record : r.records)
+        if (record.backend == backend && bench::errorMetric(record.error, metric) > worstError)
+          worstError = bench::errorMetric(record.error, metric), worst = record.method;
+      EXPECT_EQ(worst, "methods/dispersion/1-rgb-book-etas") << metric << " on " << backend;
+    }
+  }
+}
+
+// The refraction ladder: each interface and internal reflection a method
+// follows brings it nearer the traced sphere, on every backend and metric.
+TEST(RefractionBenchCli, EachModelledInterfaceBringsAMethodNearer) {
+  const fs::path dir =
+      fs::temp_directory_path() / fmt::format("snell_refraction_bench_test.{}", getpid());
+  fs::remove_all(dir);
+  const Outcome run = runSnell(fmt::format(
+      "bench --methods {}/shaders/methods/refraction --resolutions 48 --repeats 1 --warmup 0 "
+      "--no-ablation --out {}",
+      SNELL_SOURCE_ROOT, dir.string()));
+  ASSERT_EQ(run.code, 0) << run.out;
+  const bench::BenchResults r = bench::readBenchResults(dir / "bench.json");
+  fs::remove_all(dir);
+  EXPECT_NE(r.reference.find("8 hits from inside"), std::string::npos) << r.reference;
+  ASSERT_EQ(r.records.size(), 6u);
+  const std::vector<std::string> ladder{"methods/refraction/1-one-interface",
+                                        "methods/refraction/2-two-interfaces",
+                                        "methods/refraction/3-internal-bounces"};
+  for (const std::string metric : {"rms", "de_mean", "de_p95"})
+    for (const char* backend : {"gl", "vk"}) {
+      std::vector<double> errors;
+      for (const std::string& method : ladder)
+        for (const bench::BenchRecord& record : r.records)
+          if (record.backend == backend && record.method == method)
+            errors.push_back(bench::errorMetric(record.error, metric));
+      ASSERT_EQ(errors.size(), 3u) << backend;
+      EXPECT_GT(errors[0], errors[1]) << metric << " on " << backend;
+      EXPECT_GT(errors[1], errors[2]) << metric << " on " << backend;
+    }
+}
+
+}  // namespace
+}  // namespace snell::testing
