@@ -1,0 +1,65 @@
+#include "sweep/listing_draw.h"
+
+#include <fmt/format.h>
+
+#include <sstream>
+
+#include "core/errors.h"
+
+namespace snell::sweep {
+
+std::string whyNotSwept(const Manifest& manifest) {
+  if (manifest.expect == Expectation::CompileError)
+    return "does not compile as published (expect = \"compile-error\"); its corrected listing "
+           "is swept";
+  if (manifest.captureVertex.empty())
+    return "reads back from the fragment stage only: its inputs come from a scene's pixels "
+           "(interpolated or screen-space), which no sweep vertex can set; `snell run` covers "
+           "it on the sphere and torus scenes";
+  return "";
+}
+
+PreparedDraw prepareDraw(const DrawSpec& spec, const Scene& base) {
+  PreparedDraw draw;
+  draw.spec = spec;
+  const Manifest published = loadManifest(spec.manifestPath);
+  const ProgramSource program = loadProgram(published);
+  draw.eta = etaBinding(published);
+  draw.manifest = published;
+  draw.program = program;
+  draw.etaValue = draw.eta.empty() ? 0.0 : draw.eta.published;
+  if (spec.eta > 0 && !draw.eta.empty()) {
+    std::string why;
+    std::optional<EtaVariant> variant = withEta(published, program, draw.eta, spec.eta, why);
+    if (!variant) throw SetupError(fmt::format("{}: {}", spec.manifestPath, why));
+    draw.manifest = std::move(variant->manifest);
+    draw.program = std::move(variant->program);
+    draw.etaValue = spec.eta;
+  }
+  const SweepGrid grid = spec.quick ? quickGrid() : fullGrid();
+  // Bad inputs once per listing (unit frame, as published), not at every eta.
+  const bool badInputs = spec.frame == "unit" && spec.eta == 0;
+  draw.points = listingPoints(grid, draw.etaValue, badInputs);
+  draw.scene = listingScene(base, draw.points, spec.frame == "stretched");
+  draw.bindings = resolveBindings(draw.manifest, draw.scene);
+  return draw;
+}
+
+std::string drawLine(const DrawSpec& spec) {
+  return fmt::format("{}\t{}\t{:.17g}\t{}", spec.manifestPath, spec.frame, spec.eta,
+                     spec.quick ? "quick" : "full");
+}
+
+DrawSpec parseDrawLine(const std::string& line) {
+  std::stringstream in(line);
+  DrawSpec spec;
+  std::string eta, grid;
+  if (!std::getline(in, spec.manifestPath, '\t') || !std::getline(in, spec.frame, '\t') ||
+      !std::getline(in, eta, '\t') || !std::getline(in, grid))
+    throw UsageError(fmt::format("not a sweep draw line: `{}`", line));
+  spec.eta = std::stod(eta);
+  spec.quick = grid == "quick";
+  return spec;
+}
+
+}  // namespace snell::sweep

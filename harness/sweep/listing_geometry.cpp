@@ -1,0 +1,135 @@
+#include "sweep/listing_geometry.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/camera_math.h"
+
+namespace snell::sweep {
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// The view ray runs along -z to the vertex at (0, 0, -1); the normal turns
+// from +z towards +x by the incidence angle.
+ListingPoint anglePoint(double degrees, const std::string& input) {
+  ListingPoint point;
+  point.input = input;
+  point.angleDegrees = degrees;
+  const double a = degrees * kDegree;
+  point.trueNormal = {std::sin(a), 0.0, std::cos(a)};
+  point.normal = {static_cast<float>(point.trueNormal[0]), 0.0f,
+                  static_cast<float>(point.trueNormal[2])};
+  return point;
+}
+
+void addBadInputs(std::vector<ListingPoint>& points) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+  auto add = [&](const std::string& label, double degrees, auto change) {
+    ListingPoint point = anglePoint(degrees, label);
+    change(point);
+    points.push_back(point);
+  };
+  for (double degrees : {30.0, 60.0}) {
+    // I is the vertex position (seen from the origin): its length is what a
+    // listing that does not normalize I (the Cg tutorial's) sees.
+    add("unnormalized-I-x3", degrees, [](ListingPoint& p) { p.position = {0, 0, -3}; });
+    add("unnormalized-I-x0.25", degrees, [](ListingPoint& p) { p.position = {0, 0, -0.25f}; });
+    add("unnormalized-N-x3", degrees, [](ListingPoint& p) {
+      for (float& x : p.normal) x *= 3;
+    });
+    add("unnormalized-N-x0.5", degrees, [](ListingPoint& p) {
+      for (float& x : p.normal) x *= 0.5f;
+    });
+  }
+  add("I=-N", 0, [](ListingPoint&) {});
+  add("zero-N", 30, [](ListingPoint& p) { p.normal = {0, 0, 0}; });
+  add("zero-I", 30, [](ListingPoint& p) { p.position = {0, 0, 0}; });
+  add("denormal-N", 30, [](ListingPoint& p) {
+    for (float& x : p.normal) x *= 1e-40f;  // below FLT_MIN: may be flushed to 0
+  });
+  add("denormal-I", 30, [](ListingPoint& p) { p.position = {0, 0, -1e-40f}; });
+  add("huge-N", 30, [](ListingPoint& p) {
+    for (float& x : p.normal) x *= 1e30f;  // its square overflows fp32
+  });
+  add("huge-I", 30, [](ListingPoint& p) { p.position = {0, 0, -1e30f}; });
+  add("nan-N", 30, [&](ListingPoint& p) { p.normal[2] = nan; });
+  add("nan-I", 30, [&](ListingPoint& p) { p.position[2] = nan; });
+  add("inf-N", 30, [&](ListingPoint& p) { p.normal[2] = inf; });
+  add("inf-I", 30, [&](ListingPoint& p) { p.position[2] = -inf; });
+}
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 scaleBy(const std::array<float, 3>& v, const std::array<double, 3>& s, bool divide) {
+  Vec3 out;
+  for (int c = 0; c < 3; ++c) out[c] = divide ? v[c] / s[c] : v[c] * s[c];
+  return out;
+}
+
+}  // namespace
+
+std::vector<ListingPoint> listingPoints(const SweepGrid& grid, double eta, bool badInputs) {
+  std::vector<ListingPoint> points;
+  for (double degrees : anglesFor(grid, eta > 0 ? eta : 1.0))
+    points.push_back(anglePoint(degrees, "grid"));
+  // The silhouette triangle: its far vertex at 90 - spacing is in the grid
+  // only by chance, its middle never.
+  for (double degrees : {90 - kSilhouetteSpacingDegrees, 90 - kSilhouetteSpacingDegrees / 2})
+    points.push_back(anglePoint(degrees, "grid"));
+  for (double degrees : {90.5, 91.0, 95.0, 100.0, 120.0, 150.0, 179.0, 180.0})
+    points.push_back(anglePoint(degrees, "back-face"));
+  if (badInputs) addBadInputs(points);
+  return points;
+}
+
+Scene listingScene(const Scene& base, const std::vector<ListingPoint>& points, bool stretched) {
+  Scene scene = base;
+  scene.name = stretched ? "sweep-listing-stretched" : "sweep-listing";
+  scene.description = stretched ? "sweep points on a model scaled by (1, 2.5, 0.4)"
+                                : "sweep points, model space = eye space";
+  const std::array<double, 3> s = stretched ? kStretch : std::array<double, 3>{1, 1, 1};
+  AttributeStream position{"position", 4, {}}, normal{"normal", 3, {}}, tangent{"tangent", 3, {}};
+  AttributeStream texcoord{"texcoord", 2, {}};
+  for (const ListingPoint& p : points) {
+    // Model space: positions divided by the scale (so M * p is the eye-space
+    // position), normals multiplied by it and normalised (the model's own
+    // unit normals, which NormalMatrix = M^-T maps back to the true
+    // direction, not to unit length); tangents (in the plane of incidence,
+    // perpendicular to the normal) are divided, as M maps them.
+    const Vec3 modelPosition = scaleBy(p.position, s, true);
+    Vec3 modelNormal = scaleBy(p.normal, s, false);
+    if (stretched) modelNormal = normalized(modelNormal);
+    const std::array<float, 3> t = {p.normal[2], 0.0f, -p.normal[0]};
+    const Vec3 modelTangent = scaleBy(t, s, true);
+    for (double x : modelPosition) position.data.push_back(static_cast<float>(x));
+    position.data.push_back(1.0f);
+    for (double x : modelNormal) normal.data.push_back(static_cast<float>(x));
+    for (double x : modelTangent) tangent.data.push_back(static_cast<float>(x));
+    texcoord.data.insert(texcoord.data.end(), {0.5f, 0.5f});
+  }
+  scene.attributes = {{"position", std::move(position)},
+                      {"normal", std::move(normal)},
+                      {"tangent", std::move(tangent)},
+                      {"texcoord", std::move(texcoord)}};
+  scene.vertexCount = points.size();
+  Mat4d model = identity4();
+  for (int c = 0; c < 3; ++c) model[c * 4 + c] = s[c];
+  const Mat4d projection = [&] {
+    Mat4d p{};
+    const Value& v = base.values.at("projection");
+    for (int k = 0; k < 16; ++k) p[k] = v.data[k];
+    return p;
+  }();
+  scene.values["model"] = toMat4Value(model);
+  scene.values["modelview"] = toMat4Value(model);
+  scene.values["modelview_projection"] = toMat4Value(multiply(projection, model));
+  scene.values["normal_matrix"] = normalMatrixValue(model);
+  scene.values["texture_matrix"] = toMat4Value(identity4());
+  scene.values["eye_position"] = Value{ValueType::Vec3, {0, 0, 0}};
+  return scene;
+}
+
+}  // namespace snell::sweep
