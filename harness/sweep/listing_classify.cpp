@@ -252,7 +252,7 @@ std::vector<ListingBreak> classifyListingDraw(const ListingDrawView& draw,
     return classifier.breaks;
   }
   if (!backend.compiled) {
-    whole("compile_error", "the listing did not compile at this eta");
+    whole("compile_error", "the listing did not compile at this eta: " + backend.log);
     return classifier.breaks;
   }
   const std::vector<OracleVarying>& expected = *backend.expected;

@@ -61,6 +61,7 @@ struct ListingBackendView {
   bool answered = true;
   std::string problem;  // when not answered, or the draw could not be set up
   bool compiled = true;
+  std::string log;  // the compiler's, when it did not compile
   const std::vector<OracleVarying>* expected = nullptr;
   const std::vector<CapturedVarying>* observed = nullptr;
 };

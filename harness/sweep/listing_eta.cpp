@@ -19,8 +19,11 @@ bool namedEta(const std::string& name) {
 // the line is not there.
 bool replaceConstant(std::string& text, const std::string& name, const std::string& literal) {
   const std::regex line("(const\\s+float\\s+" + name + "\\s*=\\s*)([-+0-9.eEf]+)(\\s*;)");
-  if (!std::regex_search(text, line)) return false;
-  text = std::regex_replace(text, line, "${1}" + literal + "${3}");
+  std::smatch match;
+  if (!std::regex_search(text, match, line)) return false;
+  // Spliced by position: a format string's $N would read the literal's digits.
+  text.replace(static_cast<std::size_t>(match.position(2)),
+               static_cast<std::size_t>(match.length(2)), literal);
   return true;
 }
 

@@ -115,7 +115,7 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
       const DrawCapture& c = captures[b][d];
       const PrecisionRules rules = options.rules.at(b);
       if (!expected.count(rules)) expected[rules] = oracleFor(draw, rules);
-      backends.push_back({options.backends[b], c.answered, c.problem, c.compiled,
+      backends.push_back({options.backends[b], c.answered, c.problem, c.compiled, c.log,
                           &expected.at(rules), &c.varyings});
     }
     auto append = [&](std::vector<ListingBreak> more) {
