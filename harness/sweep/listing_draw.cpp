@@ -39,7 +39,13 @@ PreparedDraw prepareDraw(const DrawSpec& spec, const Scene& base) {
   const SweepGrid grid = spec.quick ? quickGrid() : fullGrid();
   // Bad inputs once per listing (unit frame, as published), not at every eta.
   const bool badInputs = spec.frame == "unit" && spec.eta == 0;
-  draw.points = listingPoints(grid, draw.etaValue, badInputs);
+  // Dense around the critical angle of every eta the listing refracts with.
+  std::vector<double> etas = {draw.etaValue};
+  for (const std::string& name : draw.eta.constants) etas.push_back(draw.manifest.constants.at(name));
+  for (const Binding& u : draw.manifest.uniforms)
+    for (const std::string& name : draw.eta.uniforms)
+      if (u.name == name) etas.push_back(std::get<Value>(u.source).data.at(0));
+  draw.points = listingPoints(grid, etas, badInputs);
   draw.scene = listingScene(base, draw.points, spec.frame == "stretched");
   draw.bindings = resolveBindings(draw.manifest, draw.scene);
   return draw;

@@ -1,5 +1,6 @@
 #include "sweep/listing_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -71,10 +72,17 @@ Vec3 scaleBy(const std::array<float, 3>& v, const std::array<double, 3>& s, bool
 
 }  // namespace
 
-std::vector<ListingPoint> listingPoints(const SweepGrid& grid, double eta, bool badInputs) {
+std::vector<ListingPoint> listingPoints(const SweepGrid& grid, const std::vector<double>& etas,
+                                        bool badInputs) {
   std::vector<ListingPoint> points;
-  for (double degrees : anglesFor(grid, eta > 0 ? eta : 1.0))
-    points.push_back(anglePoint(degrees, "grid"));
+  std::vector<double> angles = anglesFor(grid, 1.0);
+  for (double eta : etas) {
+    const std::vector<double> more = anglesFor(grid, eta);
+    angles.insert(angles.end(), more.begin(), more.end());
+  }
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  for (double degrees : angles) points.push_back(anglePoint(degrees, "grid"));
   // The silhouette triangle: its far vertex at 90 - spacing is in the grid
   // only by chance, its middle never.
   for (double degrees : {90 - kSilhouetteSpacingDegrees, 90 - kSilhouetteSpacingDegrees / 2})

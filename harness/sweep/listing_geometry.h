@@ -39,12 +39,13 @@ struct ListingPoint {
   bool frontFacing() const { return input == "grid"; }
 };
 
-// The grid's angles for `eta` (dense near its critical angle when eta > 1
+// The grid's angles for every eta in `etas` (dense near each critical angle
 // and near grazing), the silhouette pair (90 - kSilhouetteSpacingDegrees,
 // and the midpoint), back faces from 90 to 180 degrees (a back face, or the
 // view from inside the object), then, when `badInputs`, the inputs the
 // listings assume away.
-std::vector<ListingPoint> listingPoints(const SweepGrid& grid, double eta, bool badInputs);
+std::vector<ListingPoint> listingPoints(const SweepGrid& grid, const std::vector<double>& etas,
+                                        bool badInputs);
 
 // `base` (a vectors-only scene, for its projection and samplers) with the
 // points as its vertices, model = stretched ? diag(kStretch) : identity,
