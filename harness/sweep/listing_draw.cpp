@@ -12,6 +12,8 @@ std::string whyNotSwept(const Manifest& manifest) {
   if (manifest.expect == Expectation::CompileError)
     return "does not compile as published (expect = \"compile-error\"); its corrected listing "
            "is swept";
+  if (manifest.oracle.empty())
+    return "has no hand-written oracle, which the sweep holds a listing's draws against";
   if (manifest.captureVertex.empty())
     return "reads back from the fragment stage only: its inputs come from a scene's pixels "
            "(interpolated or screen-space), which no sweep vertex can set; `snell run` covers "
