@@ -135,7 +135,11 @@ struct DrawClassifier {
   void directionChecks(std::size_t k, const std::string& name, OutputRole role,
                        const Sample& s) {
     const ListingPoint& p = (*draw.points)[k];
-    if (p.input != "grid" || s.value.size() < 3 || allZero(s.value)) return;
+    if (!draw.directionsInEyeSpace) return;
+    if (p.input != "grid" || s.value.size() < 3) return;
+    if (role == OutputRole::Refracted) totalInternalReflection(k, name, s);
+    if (allZero(s.value)) return;
+    physicsDirection(k, name, role, s);
     const double length = length3(s.value);
     const double side = dot3(s.value, p.trueNormal) / length;
     const double referenceSide =
@@ -150,6 +154,63 @@ struct DrawClassifier {
       add(k, name, "reflected_wrong_side", sanityClass(referenceSide < -1e-6, s),
           fmt::format("cos to the true normal {:+.3g}: the ray goes into the surface", side),
           s.value);
+  }
+
+  // Whether the listing's refracted ray is the zero vector exactly where
+  // Snell's law has total internal reflection: 1e-6 of margin on
+  // k = 1 - eta^2 sin^2 keeps fp32 rounding of the inputs out of it.
+  void totalInternalReflection(std::size_t k, const std::string& name, const Sample& s) {
+    const ListingPoint& p = (*draw.points)[k];
+    const double eta = draw.etaOf(name);
+    if (!(eta > 0)) return;
+    const double cosine = p.trueNormal[2];
+    const double k2 = 1 - eta * eta * (1 - cosine * cosine);
+    const bool zero = allZero(s.value), referenceZero = allZero(s.reference);
+    if (zero && k2 > 1e-6)
+      add(k, name, "zero_where_physics_refracts", sanityClass(referenceZero, s),
+          fmt::format("the zero vector (total internal reflection) where Snell's law refracts "
+                      "(1 - eta^2 sin^2 = {:.3g})",
+                      k2),
+          s.value);
+    if (!zero && k2 < -1e-6)
+      add(k, name, "refracts_where_physics_reflects", sanityClass(!referenceZero, s),
+          fmt::format("a refracted ray past the critical angle (1 - eta^2 sin^2 = {:.3g})", k2),
+          s.value);
+  }
+
+  // Snell's law (refraction, eta from the listing) or the mirror law with
+  // the true normal and the unit view ray (0, 0, -1): the listing's
+  // direction may differ in length (the Cg tutorial's I is not normalised)
+  // but not in direction.
+  void physicsDirection(std::size_t k, const std::string& name, OutputRole role,
+                        const Sample& s) {
+    const ListingPoint& p = (*draw.points)[k];
+    const std::array<double, 3> I = {0, 0, -1};
+    const std::array<double, 3>& n = p.trueNormal;
+    const double cosine = -(I[0] * n[0] + I[1] * n[1] + I[2] * n[2]);
+    std::vector<double> physical(3);
+    if (role == OutputRole::Refracted) {
+      const double eta = draw.etaOf(name);
+      const double k2 = 1 - eta * eta * (1 - cosine * cosine);
+      if (!(eta > 0) || k2 < 0) return;  // total internal reflection: no ray to compare
+      for (int c = 0; c < 3; ++c) physical[c] = eta * I[c] + (eta * cosine - std::sqrt(k2)) * n[c];
+    } else {
+      for (int c = 0; c < 3; ++c) physical[c] = I[c] + 2 * cosine * n[c];
+    }
+    auto degreesOff = [&](const std::vector<double>& v) {
+      const double l = length3(v) * length3(physical);
+      const double d = (v[0] * physical[0] + v[1] * physical[1] + v[2] * physical[2]) / l;
+      return std::acos(std::clamp(d, -1.0, 1.0)) / kDegree;
+    };
+    const double off = degreesOff(s.value);
+    if (!(off > kDirectionBoundDegrees)) return;
+    const bool referenceOff = !allZero(s.reference) && degreesOff(s.reference) > kDirectionBoundDegrees;
+    add(k, name, role == OutputRole::Refracted ? "refracted_direction_error" : "reflected_direction_error",
+        sanityClass(referenceOff, s),
+        fmt::format("{:.3g} deg from the physical direction (bound {:.3g} deg, one environment "
+                    "texel)",
+                    off, kDirectionBoundDegrees),
+        s.value);
   }
 
   // Front-facing grid points of one output, by angle.

@@ -7,7 +7,9 @@
 // (above 1 the reflection carries more light than arrives: energy grows), a
 // weight that falls toward grazing incidence, a refracted direction on the
 // wrong side of the surface, a weight far from exact Fresnel, and per-vertex
-// weights interpolated across a silhouette triangle. A sanity break is the
+// weights interpolated across a silhouette triangle, a refracted or
+// reflected direction off Snell's law or the mirror law by more than
+// kDirectionBoundDegrees. A sanity break is the
 // method's when the listing evaluated in double does it too. No graphics
 // API here.
 #include <map>
@@ -24,6 +26,12 @@ namespace snell::sweep {
 // What a captured output stands for, from its name: a refracted direction
 // (Refract*, T), a reflected one (Reflect*), a Fresnel weight (any other
 // float: Ratio), or nothing the sanity checks know (colours, positions).
+// Largest angle between a listing's refracted or reflected direction and
+// the physical one before the sweep calls it a method break: one texel of
+// the scenes' environment (a 128-texel cube face spans 90 degrees, so
+// 90 / 128 = 0.70 degrees), the smallest turn a cube-map lookup can show.
+constexpr double kDirectionBoundDegrees = 90.0 / 128.0;
+
 enum class OutputRole { Refracted, Reflected, Weight, Other };
 OutputRole outputRole(const std::string& name, int components);
 
@@ -49,6 +57,9 @@ struct ListingDrawView {
   // The eta a refracted output is computed with, where it is not the main
   // one (RefractR with EtaR): its critical angle is asin(1 / that).
   std::map<std::string, double> outputEta;
+  // False where a literal matrix in the manifest turns the listing's
+  // directions (the blog's texture unit 1): the direction checks are skipped.
+  bool directionsInEyeSpace = true;
   double etaOf(const std::string& output) const {
     const auto it = outputEta.find(output);
     return it == outputEta.end() ? eta : it->second;

@@ -44,6 +44,15 @@ std::map<std::string, double> outputEtas(const PreparedDraw& draw) {
   return etas;
 }
 
+bool literalMatrix(const Manifest& m) {
+  for (const Binding& u : m.uniforms)
+    if (std::holds_alternative<Value>(u.source)) {
+      const ValueType type = std::get<Value>(u.source).type;
+      if (type == ValueType::Mat3 || type == ValueType::Mat4) return true;
+    }
+  return false;
+}
+
 }  // namespace
 
 std::vector<DrawSpec> listingDraws(const Manifest& manifest, bool quick) {
@@ -83,6 +92,9 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
         mine.resize(2);
       }
     }
+    if (literalMatrix(m))
+      result.notes.push_back({m.id, "a literal matrix in the manifest turns some outputs: the "
+                                    "direction checks (wrong side, against physics) are skipped"});
     result.swept.push_back(m.id);
     draws.insert(draws.end(), mine.begin(), mine.end());
   }
@@ -108,7 +120,7 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
     const PreparedDraw draw = prepareDraw(draws[d], base);
     result.vertices += draw.points.size();
     ListingDrawView view{draw.manifest.id, draws[d].frame, draw.etaValue, &draw.points,
-                         outputEtas(draw)};
+                         outputEtas(draw), !literalMatrix(draw.manifest)};
     std::map<PrecisionRules, std::vector<OracleVarying>> expected;
     std::vector<ListingBackendView> backends;
     for (std::size_t b = 0; b < options.backends.size(); ++b) {

@@ -110,14 +110,22 @@ TEST(ListingClassify, ARefractedRayOnTheIncidentSideIsFlagged) {
       wrong.push_back(static_cast<float>(t[c] + 2 * std::cos(a) * p.trueNormal[c]));
     }
   }
-  const std::vector<OracleVarying> expected = {v};
+  std::vector<OracleVarying> expected = {v};
   std::vector<CapturedVarying> observed = {captured("Refract", 3, wrong)};
   const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed};
-  EXPECT_TRUE(has(classifyListingDraw(f.view(), gl), "refracted_wrong_side",
-                  BreakClass::Implementation));
+  const ListingDrawView view{"test/listing", "unit", 1 / 1.5, &f.points, {}};
+  std::vector<ListingBreak> breaks = classifyListingDraw(view, gl);
+  EXPECT_TRUE(has(breaks, "refracted_wrong_side", BreakClass::Implementation));
+  EXPECT_TRUE(has(breaks, "refracted_direction_error", BreakClass::Implementation));
   std::vector<float> right(v.reference.begin(), v.reference.end());
   observed = {captured("Refract", 3, right)};
-  EXPECT_TRUE(classifyListingDraw(f.view(), gl).empty());
+  EXPECT_TRUE(classifyListingDraw(view, gl).empty());
+  // A listing that refracts with the wrong eta: the backends follow it, the
+  // method is off Snell's law.
+  const ListingDrawView glass{"test/listing", "unit", 1 / 1.2, &f.points, {}};
+  breaks = classifyListingDraw(glass, gl);
+  EXPECT_TRUE(has(breaks, "refracted_direction_error", BreakClass::Method));
+  EXPECT_FALSE(has(breaks, "refracted_direction_error", BreakClass::Implementation));
 }
 
 TEST(ListingClassify, BackendsThatDisagreeOutsideTheSpec) {
