@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "sweep/method_sweep.h"
@@ -13,6 +14,10 @@ namespace snell::sweep {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
+
+// A tenth of an output's [0, 1] colour range: an interval wider than this
+// no longer says what colour the listing gives.
+constexpr double kIllConditionedWidth = 0.1;
 
 std::string lower(std::string s) {
   for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -213,6 +218,27 @@ struct DrawClassifier {
         s.value);
   }
 
+  // A diffraction listing's highlight divides by dot(N, H). Where that
+  // goes to 0 the result stops depending on the surface in any stable
+  // way: the spec's interval for it spans more than kIllConditionedWidth
+  // (a tenth of the colour range), or it is not finite. The backends are
+  // right (they stay in the interval), the method is not.
+  void nearHalfVectorZero(std::size_t k, const std::string& name, const Sample& s) {
+    const ListingPoint& p = (*draw.points)[k];
+    double widest = 0;
+    for (std::size_t c = 0; c < s.value.size(); ++c) {
+      const double w = s.hi[c] - s.lo[c];
+      widest = std::max(widest, std::isfinite(w) ? w : std::numeric_limits<double>::infinity());
+    }
+    if (s.finite() && widest <= kIllConditionedWidth) return;
+    add(k, name, "diffraction_dot_NH_to_0", s.withinSpec() || s.undefined ? BreakClass::Method
+                                                                          : BreakClass::Implementation,
+        fmt::format("dot(N, H) = {:.3g}: the highlight divides by it; the spec allows results "
+                    "{:.3g} apart here",
+                    p.dotNH, widest),
+        s.value);
+  }
+
   // Front-facing grid points of one output, by angle.
   std::vector<std::size_t> frontSeries() const {
     std::vector<std::size_t> series;
@@ -324,6 +350,7 @@ std::vector<ListingBreak> classifyListingDraw(const ListingDrawView& draw,
       const Sample s = sampleAt(expected[o], observed[o], k);
       classifier.specChecks(k, expected[o].name, s);
       const ListingPoint& p = (*draw.points)[k];
+      if (p.input == "dot(N,H)->0") classifier.nearHalfVectorZero(k, expected[o].name, s);
       if (!s.finite() || (p.input != "grid" && p.input != "back-face")) continue;
       if (role == OutputRole::Weight) classifier.weightChecks(k, expected[o].name, s);
       if (role == OutputRole::Refracted || role == OutputRole::Reflected)

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <sstream>
 
 #include "core/errors.h"
@@ -47,7 +48,25 @@ PreparedDraw prepareDraw(const DrawSpec& spec, const Scene& base) {
   for (const Binding& u : draw.manifest.uniforms)
     for (const std::string& name : draw.eta.uniforms)
       if (u.name == name) etas.push_back(std::get<Value>(u.source).data.at(0));
-  draw.points = listingPoints(grid, etas, badInputs);
+  // A diffraction listing divides by dot(N, H): where its eye and light
+  // are literal eye-space positions, the draw adds the normals that take
+  // that to 0.
+  std::optional<std::array<double, 3>> eye, light;
+  for (const Binding& u : draw.manifest.uniforms) {
+    if (!std::holds_alternative<Value>(u.source)) continue;
+    const Value& v = std::get<Value>(u.source);
+    if (v.type != ValueType::Vec3) continue;
+    std::string name = u.name;
+    for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    const std::array<double, 3> p = {v.data[0], v.data[1], v.data[2]};
+    if (name == "eyeposition") eye = p;
+    if (name == "lightposition") light = p;
+  }
+  std::optional<HalfVector> half;
+  if (eye && light && draw.manifest.oracle.find("diffraction") != std::string::npos)
+    half = halfVectorAt(*eye, *light);
+  draw.diffraction = half.has_value();
+  draw.points = listingPoints(grid, etas, badInputs, half ? &*half : nullptr);
   draw.scene = listingScene(base, draw.points, spec.frame == "stretched");
   draw.bindings = resolveBindings(draw.manifest, draw.scene);
   return draw;

@@ -35,6 +35,7 @@ struct PreparedDraw {
   EtaBinding eta;
   double etaValue = 0;  // the main eta of this draw (0: none)
   std::vector<ListingPoint> points;
+  bool diffraction = false;  // points where dot(N, H) -> 0 were added
   Scene scene;
   ResolvedBindings bindings;
 };

@@ -72,8 +72,53 @@ Vec3 scaleBy(const std::array<float, 3>& v, const std::array<double, 3>& s, bool
 
 }  // namespace
 
+HalfVector halfVectorAt(const std::array<double, 3>& eye, const std::array<double, 3>& light) {
+  const Vec3 vertex = {0, 0, -1};
+  Vec3 l, e, h;
+  for (int c = 0; c < 3; ++c) {
+    l[c] = light[c] - vertex[c];
+    e[c] = eye[c] - vertex[c];
+  }
+  l = normalized(l);
+  e = normalized(e);
+  for (int c = 0; c < 3; ++c) h[c] = l[c] + e[c];
+  return {normalized(h)};
+}
+
+namespace {
+
+// The normal turned from +z by `degrees` towards -H's part across the view
+// ray: dot(N, H) = cos(a) Hz - sin(a) |H_perp| is 0 at a = atan(Hz / |H_perp|).
+void addHalfVectorPoints(std::vector<ListingPoint>& points, const HalfVector& half) {
+  const Vec3& h = half.h;
+  const double across = std::hypot(h[0], h[1]);
+  if (across == 0) return;  // H along the view ray: N . H reaches 0 only at grazing
+  const Vec3 away = {-h[0] / across, -h[1] / across, 0};
+  const double zero = std::atan2(h[2], across) / kDegree;
+  std::vector<double> angles = {zero};
+  for (double offset : {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0, 3.0, 10.0}) {
+    angles.push_back(zero - offset);
+    angles.push_back(zero + offset);
+  }
+  for (double degrees : angles) {
+    if (degrees < 0 || degrees > 180) continue;
+    ListingPoint p;
+    p.input = "dot(N,H)->0";
+    p.angleDegrees = degrees;
+    const double a = degrees * kDegree;
+    for (int c = 0; c < 3; ++c) {
+      p.trueNormal[c] = (c == 2 ? std::cos(a) : 0.0) + std::sin(a) * away[c];
+      p.normal[c] = static_cast<float>(p.trueNormal[c]);
+    }
+    p.dotNH = p.trueNormal[0] * h[0] + p.trueNormal[1] * h[1] + p.trueNormal[2] * h[2];
+    points.push_back(p);
+  }
+}
+
+}  // namespace
+
 std::vector<ListingPoint> listingPoints(const SweepGrid& grid, const std::vector<double>& etas,
-                                        bool badInputs) {
+                                        bool badInputs, const HalfVector* half) {
   std::vector<ListingPoint> points;
   std::vector<double> angles = anglesFor(grid, 1.0);
   for (double eta : etas) {
@@ -89,6 +134,7 @@ std::vector<ListingPoint> listingPoints(const SweepGrid& grid, const std::vector
     points.push_back(anglePoint(degrees, "grid"));
   for (double degrees : {90.5, 91.0, 95.0, 100.0, 120.0, 150.0, 179.0, 180.0})
     points.push_back(anglePoint(degrees, "back-face"));
+  if (half) addHalfVectorPoints(points, *half);
   if (badInputs) addBadInputs(points);
   return points;
 }
@@ -110,7 +156,12 @@ Scene listingScene(const Scene& base, const std::vector<ListingPoint>& points, b
     const Vec3 modelPosition = scaleBy(p.position, s, true);
     Vec3 modelNormal = scaleBy(p.normal, s, false);
     if (stretched) modelNormal = normalized(modelNormal);
-    const std::array<float, 3> t = {p.normal[2], 0.0f, -p.normal[0]};
+    // Perpendicular to the normal: in the xz plane for the grid, and for
+    // the points turned out of it the direction of the turn.
+    Vec3 t3 = cross({0, 1, 0}, {p.trueNormal[0], p.trueNormal[1], p.trueNormal[2]});
+    t3 = std::hypot(t3[0], t3[1], t3[2]) > 1e-9 ? normalized(t3) : Vec3{1, 0, 0};
+    const std::array<float, 3> t = {static_cast<float>(t3[0]), static_cast<float>(t3[1]),
+                                    static_cast<float>(t3[2])};
     const Vec3 modelTangent = scaleBy(t, s, true);
     for (double x : modelPosition) position.data.push_back(static_cast<float>(x));
     position.data.push_back(1.0f);

@@ -36,7 +36,14 @@ struct ListingPoint {
   // The geometry the point stands for (unit, finite), for the sanity checks:
   // the true eye-space normal and view direction.
   std::array<double, 3> trueNormal{0, 0, 1};
-  bool frontFacing() const { return input == "grid"; }
+  double dotNH = 0;  // diffraction listings' dot(N, H) with the true normal (points near its zero)
+};
+
+// Where a diffraction listing's dot(N, H) goes to 0: the half vector H
+// between the view and the light at the vertex, for the points turned
+// away from it (listingPoints adds them, labelled "dot(N,H)->0").
+struct HalfVector {
+  std::array<double, 3> h{0, 0, 1};
 };
 
 // The grid's angles for every eta in `etas` (dense near each critical angle
@@ -44,8 +51,14 @@ struct ListingPoint {
 // and the midpoint), back faces from 90 to 180 degrees (a back face, or the
 // view from inside the object), then, when `badInputs`, the inputs the
 // listings assume away.
+// With `half`, also the normals turned from the view ray away from H, at
+// the angle where dot(N, H) = 0 and 1e-6 to 10 degrees either side.
 std::vector<ListingPoint> listingPoints(const SweepGrid& grid, const std::vector<double>& etas,
-                                        bool badInputs);
+                                        bool badInputs, const HalfVector* half = nullptr);
+
+// The half vector at the sweep's vertex (0, 0, -1) for an eye and a light
+// in eye space.
+HalfVector halfVectorAt(const std::array<double, 3>& eye, const std::array<double, 3>& light);
 
 // `base` (a vectors-only scene, for its projection and samplers) with the
 // points as its vertices, model = stretched ? diag(kStretch) : identity,
