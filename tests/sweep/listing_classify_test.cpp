@@ -142,6 +142,26 @@ TEST(ListingClassify, BackendsThatDisagreeOutsideTheSpec) {
   EXPECT_TRUE(listingDisagreements(f.view(), gl, gl).empty());
 }
 
+TEST(ListingClassify, AColourTheSpecNoLongerBoundsNearDotNHZeroIsAMethodBreak) {
+  std::vector<ListingPoint> points(2);
+  for (ListingPoint& p : points) p.input = "dot(N,H)->0";
+  OracleVarying v;
+  v.name = "Color";
+  v.components = 1;
+  v.reference = {0.5, 0.5};
+  v.lo = {0.49, 0.0};
+  v.hi = {0.51, 1.0};  // the second point's interval spans the whole range
+  v.undefined = {0, 0};
+  const std::vector<OracleVarying> expected = {v};
+  const std::vector<CapturedVarying> observed = {captured("Color", 1, {0.5f, 0.5f})};
+  const ListingDrawView view{"test/diffraction", "unit", 0, &points, {}};
+  const std::vector<ListingBreak> breaks =
+      classifyListingDraw(view, {"gl", true, "", true, "", &expected, &observed});
+  ASSERT_EQ(breaks.size(), 1u);
+  EXPECT_EQ(breaks[0].kind, "diffraction_dot_NH_to_0");
+  EXPECT_EQ(breaks[0].cls, BreakClass::Method);
+}
+
 TEST(ListingClassify, ACrashedDrawIsOneCrashBreak) {
   Fixture f;
   const ListingBackendView vk{"vk", false, "killed by signal 11", true, "", nullptr, nullptr};

@@ -69,6 +69,22 @@ TEST(ListingGeometry, StretchedFrameKeepsTheEyeSpaceGeometryButNotTheLength) {
   EXPECT_TRUE(someNotUnit);
 }
 
+TEST(ListingGeometry, HalfVectorPointsCrossZeroInFrontOfTheEye) {
+  // The Orange Book's diffraction set-up: eye at the origin, a light to
+  // the right and below.
+  const HalfVector half = halfVectorAt({0, 0, 0}, {3, -3, 0});
+  int near = 0;
+  for (const ListingPoint& p : listingPoints(smallGrid(), {}, false, &half)) {
+    if (p.input != "dot(N,H)->0") continue;
+    double dot = 0;
+    for (int c = 0; c < 3; ++c) dot += p.trueNormal[c] * half.h[c];
+    EXPECT_NEAR(dot, p.dotNH, 1e-12);
+    EXPECT_GT(p.trueNormal[2], 0) << "faces the eye";
+    near += std::abs(dot) < 1e-7;
+  }
+  EXPECT_GE(near, 3);  // the zero and 1e-6 degrees either side
+}
+
 TEST(ListingGeometry, UnitFrameIsTheIdentity) {
   const Scene scene = listingScene(makeScene("sweep"), listingPoints(smallGrid(), {}, false), false);
   const Value& modelview = scene.values.at("modelview");
