@@ -55,8 +55,9 @@ Command addSweepCommand(CLI::App& app) {
   sweep->add_option("--device", options->device,
                     "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
                     "device backends (gl:gpu): a device index");
-  sweep->add_option("--gl-provider", options->glProvider,
-                    "OpenGL context provider in place of each backend's own: osmesa or egl")
+  sweep
+      ->add_option("--gl-provider", options->glProvider,
+                   "OpenGL context provider in place of each backend's own: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
   sweep->add_option("--listings", options->listings,
                     "Catalog listings to sweep (glob over ids, `snell list`); empty: none");
@@ -89,7 +90,8 @@ Command addSweepCommand(CLI::App& app) {
     const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
     std::vector<std::string> driverArgs;
-    if (!options->device.empty()) driverArgs.insert(driverArgs.end(), {"--device", options->device});
+    if (!options->device.empty())
+      driverArgs.insert(driverArgs.end(), {"--device", options->device});
     if (!options->glProvider.empty())
       driverArgs.insert(driverArgs.end(), {"--gl-provider", options->glProvider});
     sweep::SweepOptions sweepOptions;

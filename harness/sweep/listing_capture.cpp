@@ -101,9 +101,8 @@ int runListingWorker(const std::filesystem::path& jobFile, std::size_t start,
 
 std::vector<DrawCapture> captureDraws(const std::string& executable, const std::string& backend,
                                       const std::vector<std::string>& driverArgs,
-                                      const std::filesystem::path& jobFile,
-                                      std::size_t drawCount, double timeoutSeconds,
-                                      int maxChildren) {
+                                      const std::filesystem::path& jobFile, std::size_t drawCount,
+                                      double timeoutSeconds, int maxChildren) {
   signal(SIGPIPE, SIG_IGN);
   std::vector<DrawCapture> captures(drawCount);
   std::size_t next = 0;
@@ -113,8 +112,9 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
         captures[k].problem = fmt::format("not run: {} driver children ended early", children);
       break;
     }
-    std::vector<std::string> argv = {executable,         "sweep",           "--listing-worker",
-                                     jobFile.string(),   "--listing-start", std::to_string(next),
+    std::vector<std::string> argv = {executable,         "sweep",
+                                     "--listing-worker", jobFile.string(),
+                                     "--listing-start",  std::to_string(next),
                                      "--backend",        backend};
     argv.insert(argv.end(), driverArgs.begin(), driverArgs.end());
     WorkerProcess child(argv);
@@ -152,10 +152,9 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
     const bool hung = !child.stdoutClosed();
     const std::string how = child.finish(hung);
     captures[next].answered = false;
-    captures[next].problem =
-        hung ? fmt::format("no answer within {:.0f} s (hang)", timeoutSeconds)
-             : fmt::format("the driver child ended ({}) on this draw: {}", how,
-                           child.stderrTail(3));
+    captures[next].problem = hung ? fmt::format("no answer within {:.0f} s (hang)", timeoutSeconds)
+                                  : fmt::format("the driver child ended ({}) on this draw: {}", how,
+                                                child.stderrTail(3));
     ++next;  // the next child starts after the draw that crashed
   }
   return captures;

@@ -32,9 +32,8 @@ int runListingWorker(const std::filesystem::path& jobFile, std::size_t start,
 // answer within `timeoutSeconds` is killed and recorded as a hang.
 std::vector<DrawCapture> captureDraws(const std::string& executable, const std::string& backend,
                                       const std::vector<std::string>& driverArgs,
-                                      const std::filesystem::path& jobFile,
-                                      std::size_t drawCount, double timeoutSeconds,
-                                      int maxChildren = 20);
+                                      const std::filesystem::path& jobFile, std::size_t drawCount,
+                                      double timeoutSeconds, int maxChildren = 20);
 
 // One answer line of the child (exposed for tests).
 DrawCapture drawCaptureFromLine(const std::string& line);

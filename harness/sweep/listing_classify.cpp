@@ -100,7 +100,8 @@ struct DrawClassifier {
     const bool open = !inputFinite(p) || s.undefined;
     if (!s.finite()) {
       const bool allowed = open || s.withinSpec();
-      add(k, name, "nan_or_inf_output", allowed ? BreakClass::Undefined : BreakClass::Implementation,
+      add(k, name, "nan_or_inf_output",
+          allowed ? BreakClass::Undefined : BreakClass::Implementation,
           !inputFinite(p) ? "a NaN or infinite input"
           : s.undefined   ? "the spec leaves a component open here (normalize of zero, ...)"
           : allowed       ? "within the interval: an overflow the spec allows"
@@ -137,8 +138,7 @@ struct DrawClassifier {
     }
   }
 
-  void directionChecks(std::size_t k, const std::string& name, OutputRole role,
-                       const Sample& s) {
+  void directionChecks(std::size_t k, const std::string& name, OutputRole role, const Sample& s) {
     const ListingPoint& p = (*draw.points)[k];
     if (!draw.directionsInEyeSpace) return;
     if (p.input != "grid" || s.value.size() < 3) return;
@@ -187,8 +187,7 @@ struct DrawClassifier {
   // the true normal and the unit view ray (0, 0, -1): the listing's
   // direction may differ in length (the Cg tutorial's I is not normalised)
   // but not in direction.
-  void physicsDirection(std::size_t k, const std::string& name, OutputRole role,
-                        const Sample& s) {
+  void physicsDirection(std::size_t k, const std::string& name, OutputRole role, const Sample& s) {
     const ListingPoint& p = (*draw.points)[k];
     const std::array<double, 3> I = {0, 0, -1};
     const std::array<double, 3>& n = p.trueNormal;
@@ -209,8 +208,10 @@ struct DrawClassifier {
     };
     const double off = degreesOff(s.value);
     if (!(off > kDirectionBoundDegrees)) return;
-    const bool referenceOff = !allZero(s.reference) && degreesOff(s.reference) > kDirectionBoundDegrees;
-    add(k, name, role == OutputRole::Refracted ? "refracted_direction_error" : "reflected_direction_error",
+    const bool referenceOff =
+        !allZero(s.reference) && degreesOff(s.reference) > kDirectionBoundDegrees;
+    add(k, name,
+        role == OutputRole::Refracted ? "refracted_direction_error" : "reflected_direction_error",
         sanityClass(referenceOff, s),
         fmt::format("{:.3g} deg from the physical direction (bound {:.3g} deg, one environment "
                     "texel)",
@@ -231,8 +232,8 @@ struct DrawClassifier {
       widest = std::max(widest, std::isfinite(w) ? w : std::numeric_limits<double>::infinity());
     }
     if (s.finite() && widest <= kIllConditionedWidth) return;
-    add(k, name, "diffraction_dot_NH_to_0", s.withinSpec() || s.undefined ? BreakClass::Method
-                                                                          : BreakClass::Implementation,
+    add(k, name, "diffraction_dot_NH_to_0",
+        s.withinSpec() || s.undefined ? BreakClass::Method : BreakClass::Implementation,
         fmt::format("dot(N, H) = {:.3g}: the highlight divides by it; the spec allows results "
                     "{:.3g} apart here",
                     p.dotNH, widest),
@@ -259,12 +260,10 @@ struct DrawClassifier {
       if (!p.finite() || !q.finite()) continue;
       for (std::size_t c = 0; c < p.value.size(); ++c) {
         const double jump = std::abs(q.value[c] - p.value[c]);
-        const double allowed =
-            std::abs(q.reference[c] - p.reference[c]) + p.width(c) + q.width(c);
+        const double allowed = std::abs(q.reference[c] - p.reference[c]) + p.width(c) + q.width(c);
         if (jump <= allowed) continue;
         add(series[m], expected.name, "discontinuity",
-            p.withinSpec() && q.withinSpec() ? BreakClass::Undefined
-                                             : BreakClass::Implementation,
+            p.withinSpec() && q.withinSpec() ? BreakClass::Undefined : BreakClass::Implementation,
             fmt::format("component {} jumps {:.3g} from {:.7g} deg; the listing's own slope and "
                         "the intervals allow {:.3g}",
                         c, jump, (*draw.points)[series[m - 1]].angleDegrees, allowed),
@@ -326,9 +325,17 @@ std::vector<ListingBreak> classifyListingDraw(const ListingDrawView& draw,
                                               const ListingBackendView& backend) {
   DrawClassifier classifier{draw, backend, {}};
   auto whole = [&](std::string kind, std::string detail) {
-    classifier.breaks.push_back({draw.listing, "", backend.backend, draw.frame, "draw", draw.eta,
-                                 0, std::move(kind), BreakClass::Implementation,
-                                 std::move(detail), {}});
+    classifier.breaks.push_back({draw.listing,
+                                 "",
+                                 backend.backend,
+                                 draw.frame,
+                                 "draw",
+                                 draw.eta,
+                                 0,
+                                 std::move(kind),
+                                 BreakClass::Implementation,
+                                 std::move(detail),
+                                 {}});
   };
   if (!backend.answered) {
     whole("crash", backend.problem);
@@ -411,8 +418,8 @@ std::vector<ListingCriticalAngle> listingCriticalAngles(const ListingDrawView& d
     std::sort(series.begin(), series.end(), [&](std::size_t a, std::size_t b) {
       return (*draw.points)[a].angleDegrees < (*draw.points)[b].angleDegrees;
     });
-    ListingCriticalAngle c{draw.listing, expected.name, backend.backend, draw.frame, eta,
-                           std::asin(1 / eta) / kDegree};
+    ListingCriticalAngle c{draw.listing, expected.name, backend.backend,
+                           draw.frame,   eta,           std::asin(1 / eta) / kDegree};
     for (std::size_t m = 1; m < series.size() && !c.found; ++m) {
       const Sample p = sampleAt(expected, (*backend.observed)[o], series[m - 1]);
       const Sample q = sampleAt(expected, (*backend.observed)[o], series[m]);

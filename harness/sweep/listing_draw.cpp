@@ -44,7 +44,8 @@ PreparedDraw prepareDraw(const DrawSpec& spec, const Scene& base) {
   const bool badInputs = spec.frame == "unit" && spec.eta == 0;
   // Dense around the critical angle of every eta the listing refracts with.
   std::vector<double> etas = {draw.etaValue};
-  for (const std::string& name : draw.eta.constants) etas.push_back(draw.manifest.constants.at(name));
+  for (const std::string& name : draw.eta.constants)
+    etas.push_back(draw.manifest.constants.at(name));
   for (const Binding& u : draw.manifest.uniforms)
     for (const std::string& name : draw.eta.uniforms)
       if (u.name == name) etas.push_back(std::get<Value>(u.source).data.at(0));

@@ -35,8 +35,8 @@ std::vector<ListingBreakGroup> groupListingBreaks(const std::vector<ListingBreak
     auto [it, fresh] = groups.try_emplace(key);
     ListingBreakGroup& g = it->second;
     if (fresh) {
-      g = {b.listing, b.backend, b.output, b.frame, b.input, b.kind, cls, 0,
-           b.angleDegrees, b.angleDegrees, b.eta, b.eta};
+      g = {b.listing, b.backend, b.output,       b.frame,        b.input, b.kind,
+           cls,       0,         b.angleDegrees, b.angleDegrees, b.eta,   b.eta};
     }
     ++g.count;
     g.angleMin = std::min(g.angleMin, b.angleDegrees);
@@ -56,8 +56,10 @@ json listingSweepJson(const ListingSweepResult& result) {
   out["vertices"] = result.vertices;
   out["swept"] = result.swept;
   json notSwept = json::array(), notes = json::array();
-  for (const ListingNote& n : result.notSwept) notSwept.push_back({{"listing", n.listing}, {"why", n.note}});
-  for (const ListingNote& n : result.notes) notes.push_back({{"listing", n.listing}, {"note", n.note}});
+  for (const ListingNote& n : result.notSwept)
+    notSwept.push_back({{"listing", n.listing}, {"why", n.note}});
+  for (const ListingNote& n : result.notes)
+    notes.push_back({{"listing", n.listing}, {"note", n.note}});
   out["not_swept"] = notSwept;
   out["notes"] = notes;
   json critical = json::array();
@@ -109,10 +111,12 @@ json listingSweepJson(const ListingSweepResult& result) {
 void printListingTable(const ListingSweepResult& result, std::FILE* file) {
   fmt::print(file, "\nlistings: {} swept ({} draws, {} vertices per backend), {} not swept\n",
              result.swept.size(), result.draws, result.vertices, result.notSwept.size());
-  for (const ListingNote& n : result.notSwept) fmt::print(file, "  not swept: {}: {}\n", n.listing, n.note);
+  for (const ListingNote& n : result.notSwept)
+    fmt::print(file, "  not swept: {}: {}\n", n.listing, n.note);
   for (const ListingNote& n : result.notes) fmt::print(file, "  note: {}: {}\n", n.listing, n.note);
   fmt::print(file, "{:<44} {:<8} {:<9} {:<9} {:<20} {:<30} {:<14} {:>6}  {:<17} {}\n", "listing",
-             "backend", "output", "frame", "input", "kind", "class", "points", "angle (deg)", "eta");
+             "backend", "output", "frame", "input", "kind", "class", "points", "angle (deg)",
+             "eta");
   for (const ListingBreakGroup& g : groupListingBreaks(result.breaks))
     fmt::print(file, "{:<44} {:<8} {:<9} {:<9} {:<20} {:<30} {:<14} {:>6}  {:<17} {}\n", g.listing,
                g.backend, g.output, g.frame, g.input, g.kind, g.cls, g.count,
@@ -125,8 +129,8 @@ void printListingTable(const ListingSweepResult& result, std::FILE* file) {
   for (const ListingCriticalAngle& c : result.criticalAngles) {
     if (c.frame != "unit") continue;
     if (!c.found)
-      fmt::print(file, "{:<44} {:<9} {:<8} {:>8.5g} {:>12.6f} {:>12} {:>12}\n", c.listing,
-                 c.output, c.backend, c.eta, c.closedFormDegrees, "none", "-");
+      fmt::print(file, "{:<44} {:<9} {:<8} {:>8.5g} {:>12.6f} {:>12} {:>12}\n", c.listing, c.output,
+                 c.backend, c.eta, c.closedFormDegrees, "none", "-");
     else
       fmt::print(file, "{:<44} {:<9} {:<8} {:>8.5g} {:>12.6f} {:>12.6f} {:>12.2e}\n", c.listing,
                  c.output, c.backend, c.eta, c.closedFormDegrees, c.foundDegrees,

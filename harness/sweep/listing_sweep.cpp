@@ -72,8 +72,7 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
   std::vector<DrawSpec> draws;
   const Scene base = makeScene("sweep");
   for (const Manifest& m : loadManifests(options.shadersDir)) {
-    if (!options.filter.empty() && fnmatch(options.filter.c_str(), m.id.c_str(), 0) != 0)
-      continue;
+    if (!options.filter.empty() && fnmatch(options.filter.c_str(), m.id.c_str(), 0) != 0) continue;
     if (const std::string why = whyNotSwept(m); !why.empty()) {
       result.notSwept.push_back({m.id, why});
       continue;
@@ -93,8 +92,9 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
       }
     }
     if (literalMatrix(m))
-      result.notes.push_back({m.id, "a literal matrix in the manifest turns some outputs: the "
-                                    "direction checks (wrong side, against physics) are skipped"});
+      result.notes.push_back({m.id,
+                              "a literal matrix in the manifest turns some outputs: the "
+                              "direction checks (wrong side, against physics) are skipped"});
     result.swept.push_back(m.id);
     draws.insert(draws.end(), mine.begin(), mine.end());
   }
@@ -104,7 +104,8 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
   {
     std::ofstream job(jobFile);
     for (const DrawSpec& d : draws) job << drawLine(d) << '\n';
-    if (!job) throw SetupError(jobFile.string() + ": cannot write the sweep's job file; check --out");
+    if (!job)
+      throw SetupError(jobFile.string() + ": cannot write the sweep's job file; check --out");
   }
   // The drivers run side by side, each in its own children.
   std::vector<std::future<std::vector<DrawCapture>>> running;
@@ -119,8 +120,8 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
   for (std::size_t d = 0; d < draws.size(); ++d) {
     const PreparedDraw draw = prepareDraw(draws[d], base);
     result.vertices += draw.points.size();
-    ListingDrawView view{draw.manifest.id, draws[d].frame, draw.etaValue, &draw.points,
-                         outputEtas(draw), !literalMatrix(draw.manifest)};
+    ListingDrawView view{draw.manifest.id, draws[d].frame,   draw.etaValue,
+                         &draw.points,     outputEtas(draw), !literalMatrix(draw.manifest)};
     std::map<PrecisionRules, std::vector<OracleVarying>> expected;
     std::vector<ListingBackendView> backends;
     for (std::size_t b = 0; b < options.backends.size(); ++b) {

@@ -15,9 +15,9 @@
 namespace snell::sweep {
 
 struct ListingSweepOptions {
-  std::string executable;             // the snell binary (its `sweep --listing-worker`)
-  std::vector<std::string> backends;  // drivers
-  std::vector<PrecisionRules> rules;  // each driver's API rules, same order
+  std::string executable;               // the snell binary (its `sweep --listing-worker`)
+  std::vector<std::string> backends;    // drivers
+  std::vector<PrecisionRules> rules;    // each driver's API rules, same order
   std::vector<std::string> driverArgs;  // --device, --gl-provider
   std::filesystem::path shadersDir;
   std::string filter;  // glob over listing ids; empty: all

@@ -200,7 +200,8 @@ BackendSweep sweepDriver(const std::string& executable, const std::string& backe
   sweep.points.resize(points.size());
   std::vector<std::size_t> all(points.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  DriverRun{executable, backend, driverArgs, points, workDir, timeoutSeconds, maxChildren, sweep}.run(all);
+  DriverRun{executable, backend, driverArgs, points, workDir, timeoutSeconds, maxChildren, sweep}
+      .run(all);
   return sweep;
 }
 

@@ -33,10 +33,9 @@ SweepResult runSweep(const SweepOptions& options) {
   }
   for (const std::string& backend : options.backends)
     result.sweeps.push_back(
-        options.builtins
-            ? sweepDriver(options.executable, backend, result.points, options.outDir,
-                          options.timeoutSeconds, 40, options.driverArgs)
-            : BackendSweep{backend, "", {}});
+        options.builtins ? sweepDriver(options.executable, backend, result.points, options.outDir,
+                                       options.timeoutSeconds, 40, options.driverArgs)
+                         : BackendSweep{backend, "", {}});
   classifyAll(result);
   if (!options.listings.empty()) {
     ListingSweepOptions listing;

@@ -15,11 +15,11 @@
 namespace snell::sweep {
 
 struct SweepOptions {
-  std::string executable;             // the snell binary, whose `eval` runs each driver
-  std::vector<std::string> backends;  // drivers; the oracle is always swept
-  std::filesystem::path outDir;       // sweep-input.jsonl goes here
-  bool quick = false;                 // quickGrid() in place of fullGrid()
-  double timeoutSeconds = 300;        // per driver
+  std::string executable;               // the snell binary, whose `eval` runs each driver
+  std::vector<std::string> backends;    // drivers; the oracle is always swept
+  std::filesystem::path outDir;         // sweep-input.jsonl goes here
+  bool quick = false;                   // quickGrid() in place of fullGrid()
+  double timeoutSeconds = 300;          // per driver
   std::vector<std::string> driverArgs;  // --device, --gl-provider, for every driver child
   std::vector<PrecisionRules> rules;    // each driver's API rules (for the listings' oracles)
   bool builtins = true;                 // refract() and reflect() themselves

@@ -50,7 +50,8 @@ TEST(SceneScale, StretchedNormalsAreNotUnitButStayPerpendicular) {
 
 TEST(SceneScale, UnscaledScenesKeepUnitNormals) {
   const Scene s = makeScene("sphere");
-  const std::array<double, 3> n = times3(s.values.at("normal_matrix"), &s.attributes.at("normal").data[300]);
+  const std::array<double, 3> n =
+      times3(s.values.at("normal_matrix"), &s.attributes.at("normal").data[300]);
   EXPECT_NEAR(std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), 1.0, 1e-6);
 }
 

@@ -13,7 +13,8 @@ namespace {
 TEST(ListingCapture, AnswerLineRoundTripsNonFiniteValues) {
   DrawCapture c;
   c.compiled = true;
-  c.varyings.push_back({"Ratio", 1,
+  c.varyings.push_back({"Ratio",
+                        1,
                         {0.1f, std::numeric_limits<float>::quiet_NaN(),
                          -std::numeric_limits<float>::infinity(), 1e-40f}});
   const DrawCapture back = drawCaptureFromLine(drawCaptureLine(3, c));

@@ -21,15 +21,16 @@ namespace fs = std::filesystem;
 // path says "crash" and stalling on one that says "hang".
 fs::path fakeWorker() {
   const fs::path script = fs::temp_directory_path() / fmt::format("snell-lw-{}.sh", ::getpid());
-  std::ofstream(script) << "#!/bin/sh\n"
-                           "k=0\n"
-                           "while IFS= read -r line; do\n"
-                           "  if [ $k -ge \"$5\" ]; then\n"
-                           "    case \"$line\" in *crash*) kill -SEGV $$;; *hang*) sleep 30;; esac\n"
-                           "    echo \"{\\\"draw\\\":$k,\\\"compiled\\\":true,\\\"varyings\\\":[]}\"\n"
-                           "  fi\n"
-                           "  k=$((k+1))\n"
-                           "done < \"$3\"\n";
+  std::ofstream(script)
+      << "#!/bin/sh\n"
+         "k=0\n"
+         "while IFS= read -r line; do\n"
+         "  if [ $k -ge \"$5\" ]; then\n"
+         "    case \"$line\" in *crash*) kill -SEGV $$;; *hang*) sleep 30;; esac\n"
+         "    echo \"{\\\"draw\\\":$k,\\\"compiled\\\":true,\\\"varyings\\\":[]}\"\n"
+         "  fi\n"
+         "  k=$((k+1))\n"
+         "done < \"$3\"\n";
   ::chmod(script.c_str(), 0755);
   return script;
 }

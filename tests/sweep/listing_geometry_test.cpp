@@ -25,8 +25,8 @@ SweepGrid smallGrid() {
 TEST(ListingGeometry, GridNormalsMakeTheirAngleWithTheViewRay) {
   for (const ListingPoint& p : listingPoints(smallGrid(), {1.5}, false)) {
     const double cosine = p.trueNormal[2];  // the view ray is -z: cos = dot(-I, N)
-    EXPECT_NEAR(std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi,
-                p.angleDegrees, 1e-9);
+    EXPECT_NEAR(std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::numbers::pi, p.angleDegrees,
+                1e-9);
   }
 }
 
@@ -86,7 +86,8 @@ TEST(ListingGeometry, HalfVectorPointsCrossZeroInFrontOfTheEye) {
 }
 
 TEST(ListingGeometry, UnitFrameIsTheIdentity) {
-  const Scene scene = listingScene(makeScene("sweep"), listingPoints(smallGrid(), {}, false), false);
+  const Scene scene =
+      listingScene(makeScene("sweep"), listingPoints(smallGrid(), {}, false), false);
   const Value& modelview = scene.values.at("modelview");
   for (int k = 0; k < 16; ++k) EXPECT_EQ(modelview.data[k], k % 5 == 0 ? 1.0f : 0.0f);
 }
