@@ -21,6 +21,8 @@ Command addEvalCommand(CLI::App& app) {
     std::string backend = "oracle";
     std::string rules = "glsl";
     std::string input = "-";
+    std::string device;
+    std::string glProvider;
   };
   auto options = std::make_shared<Options>();
   eval->add_option("--backend", options->backend, "oracle, or a backend (`snell devices`)")
@@ -37,6 +39,12 @@ Command addEvalCommand(CLI::App& app) {
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
                    "is judged by its own API's")
       ->check(CLI::IsMember({"glsl", "vulkan"}));
+  eval->add_option("--device", options->device,
+                   "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
+                   "device backends (gl:gpu): a device index");
+  eval->add_option("--gl-provider", options->glProvider,
+                   "OpenGL context provider in place of the backend's own: osmesa or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
   eval->add_option("input", options->input, "JSON Lines file, or - for standard input");
   eval->footer(
       R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
@@ -67,7 +75,10 @@ and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "
     PrecisionRules rules =
         options->rules == "vulkan" ? PrecisionRules::Vulkan : PrecisionRules::Glsl;
     if (options->backend != "oracle") {
-      backend = makeBackend(options->backend, {});
+      BackendOptions backendOptions;
+      backendOptions.device = options->device;
+      backendOptions.glProvider = options->glProvider;
+      backend = makeBackend(options->backend, backendOptions);
       rules = precisionRulesForApi(backend->driverInfo().api);
     }
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules);

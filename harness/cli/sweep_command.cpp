@@ -8,6 +8,8 @@
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "runner/backend_probe.h"
+#include "runner/builtin_eval.h"
+#include "sweep/listing_capture.h"
 #include "sweep/sweep_charts.h"
 #include "sweep/sweep_report.h"
 #include "sweep/sweep_run.h"
@@ -26,6 +28,13 @@ Command addSweepCommand(CLI::App& app) {
     bool quick = false;
     bool noCharts = false;
     double timeout = 300;
+    std::string device;
+    std::string glProvider;
+    std::string listings = "*";
+    bool noBuiltins = false;
+    std::string shaders = defaultShadersDir();
+    std::string listingWorker;
+    std::size_t listingStart = 0;
   };
   auto options = std::make_shared<Options>();
   sweep
@@ -43,6 +52,21 @@ Command addSweepCommand(CLI::App& app) {
         }
         return "";
       });
+  sweep->add_option("--device", options->device,
+                    "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
+                    "device backends (gl:gpu): a device index");
+  sweep
+      ->add_option("--gl-provider", options->glProvider,
+                   "OpenGL context provider in place of each backend's own: osmesa or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+  sweep->add_option("--listings", options->listings,
+                    "Catalog listings to sweep (glob over ids, `snell list`); empty: none");
+  sweep->add_option("--shaders", options->shaders, "The catalog's folder");
+  sweep->add_flag("--no-builtins", options->noBuiltins,
+                  "Skip refract() and reflect() themselves (the listings only)");
+  // The driver child of the listings' sweep (listing_capture.h): not for people.
+  sweep->add_option("--listing-worker", options->listingWorker)->group("");
+  sweep->add_option("--listing-start", options->listingStart)->group("");
   sweep->add_option("--out", options->out, "Folder for the charts, their data and the input");
   sweep->add_option("--json", options->json, "Breaks as JSON (default OUT/sweep.json)");
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
@@ -56,20 +80,39 @@ Command addSweepCommand(CLI::App& app) {
       "break was found.");
   return [options] {
     namespace fs = std::filesystem;
+    if (!options->listingWorker.empty()) {
+      BackendOptions backendOptions;
+      backendOptions.device = options->device;
+      backendOptions.glProvider = options->glProvider;
+      return sweep::runListingWorker(options->listingWorker, options->listingStart,
+                                     options->backend, backendOptions);
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
+    std::vector<std::string> driverArgs;
+    if (!options->device.empty())
+      driverArgs.insert(driverArgs.end(), {"--device", options->device});
+    if (!options->glProvider.empty())
+      driverArgs.insert(driverArgs.end(), {"--gl-provider", options->glProvider});
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;
     sweepOptions.backends = splitBackendList(options->backend);
     sweepOptions.outDir = options->out;
     sweepOptions.quick = options->quick;
     sweepOptions.timeoutSeconds = options->timeout;
+    sweepOptions.driverArgs = driverArgs;
+    sweepOptions.builtins = !options->noBuiltins;
+    sweepOptions.listings = options->listings;
+    sweepOptions.shadersDir = options->shaders;
     // A driver that does not come up here stops the sweep before it starts.
-    const std::vector<BackendProbe> probes = probeBackends(executable, sweepOptions.backends, {});
-    for (const BackendProbe& probe : probes)
+    const std::vector<BackendProbe> probes =
+        probeBackends(executable, sweepOptions.backends, driverArgs);
+    for (const BackendProbe& probe : probes) {
       if (!probe.up)
         throw SetupError(fmt::format("backend {} does not come up here: {} (`snell devices`)",
                                      probe.backend, probe.problem));
+      sweepOptions.rules.push_back(precisionRulesForApi(probe.driver.api));
+    }
     sweep::SweepResult result = sweep::runSweep(sweepOptions);
     for (std::size_t k = 0; k < probes.size(); ++k)
       result.sweeps[k + 1].renderer = probes[k].driver.renderer;

@@ -24,8 +24,11 @@ constexpr double kPi = std::numbers::pi;
 double radians(double degrees) { return degrees * kPi / 180; }
 
 void addCameraValues(Scene& scene, const SceneFile& file) {
-  const Mat4d model = rotation({file.modelAxis[0], file.modelAxis[1], file.modelAxis[2]},
-                               radians(file.modelDegrees));
+  Mat4d scale = identity4();
+  for (int c = 0; c < 3; ++c) scale[c * 4 + c] = file.modelScale[c];
+  const Mat4d model = multiply(
+      rotation({file.modelAxis[0], file.modelAxis[1], file.modelAxis[2]}, radians(file.modelDegrees)),
+      scale);
   const Vec3d eye = {file.eye[0], file.eye[1], file.eye[2]};
   const Mat4d view = lookAt(eye, {file.center[0], file.center[1], file.center[2]},
                             {file.up[0], file.up[1], file.up[2]});

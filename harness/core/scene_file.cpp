@@ -105,9 +105,14 @@ class SceneReader {
       fail(shape, fmt::format("unknown shape `{}`; use sphere, torus, sweep or fullscreen", s.shape));
     }
     if (const toml::table* model = table(root, "model", false)) {
-      rejectUnknownKeys(*model, {"rotation_axis", "rotation_degrees"}, path_, "[model]");
+      rejectUnknownKeys(*model, {"rotation_axis", "rotation_degrees", "scale"}, path_, "[model]");
       s.modelAxis = vec3(*model, "rotation_axis", s.modelAxis);
       s.modelDegrees = number(*model, "rotation_degrees", 0, false);
+      s.modelScale = vec3(*model, "scale", s.modelScale);
+      for (double factor : s.modelScale)
+        if (!(factor > 0))
+          fail(model->get("scale"), "`scale` must hold three numbers > 0 (a mirror or a flat "
+                                    "model turns faces around)");
     }
     const toml::table& camera = *table(root, "camera", true);
     rejectUnknownKeys(camera, {"eye", "center", "up", "fovy_degrees", "near", "far"}, path_, "[camera]");

@@ -20,6 +20,10 @@ struct SceneFile {
   double majorRadius = 0, minorRadius = 0;
   std::array<double, 3> modelAxis{0, 1, 0};
   double modelDegrees = 0;
+  // [model] scale: applied before the turn. Unequal factors make
+  // NormalMatrix (the inverse transpose) give normals that are not unit
+  // length, so a listing's normalize() calls matter.
+  std::array<double, 3> modelScale{1, 1, 1};
   std::array<double, 3> eye{}, center{0, 0, -1}, up{0, 1, 0};
   double fovyDegrees = 45, zNear = 0.5, zFar = 10;
   int environmentSize = 128;

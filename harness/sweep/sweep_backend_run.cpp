@@ -103,10 +103,14 @@ namespace {
 // those it did not answer carry how the child ended. `hung` is set when it
 // was cut off at the time limit.
 std::vector<Observation> runEvalChild(const std::string& executable, const std::string& backend,
+                                      const std::vector<std::string>& driverArgs,
                                       const std::filesystem::path& inputFile,
                                       std::size_t pointCount, double timeoutSeconds, bool& hung) {
   std::vector<Observation> observations(pointCount);
-  WorkerProcess child({executable, "eval", "--backend", backend, inputFile.string()});
+  std::vector<std::string> argv = {executable, "eval", "--backend", backend};
+  argv.insert(argv.end(), driverArgs.begin(), driverArgs.end());
+  argv.push_back(inputFile.string());
+  WorkerProcess child(argv);
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(timeoutSeconds));
@@ -143,6 +147,7 @@ std::vector<Observation> runEvalChild(const std::string& executable, const std::
 struct DriverRun {
   const std::string& executable;
   const std::string& backend;
+  const std::vector<std::string>& driverArgs;
   const std::vector<SweepPoint>& points;
   const std::filesystem::path& workDir;
   double timeoutSeconds;
@@ -160,7 +165,7 @@ struct DriverRun {
     --childrenLeft;
     bool hung = false;
     const std::vector<Observation> got =
-        runEvalChild(executable, backend, input, subset.size(), timeoutSeconds, hung);
+        runEvalChild(executable, backend, driverArgs, input, subset.size(), timeoutSeconds, hung);
     std::filesystem::remove(input);
     std::vector<std::size_t> unanswered;
     for (std::size_t k = 0; k < subset.size(); ++k) {
@@ -188,14 +193,15 @@ struct DriverRun {
 BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
                          const std::vector<SweepPoint>& points,
                          const std::filesystem::path& workDir, double timeoutSeconds,
-                         int maxChildren) {
+                         int maxChildren, const std::vector<std::string>& driverArgs) {
   signal(SIGPIPE, SIG_IGN);
   BackendSweep sweep;
   sweep.backend = backend;
   sweep.points.resize(points.size());
   std::vector<std::size_t> all(points.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  DriverRun{executable, backend, points, workDir, timeoutSeconds, maxChildren, sweep}.run(all);
+  DriverRun{executable, backend, driverArgs, points, workDir, timeoutSeconds, maxChildren, sweep}
+      .run(all);
   return sweep;
 }
 

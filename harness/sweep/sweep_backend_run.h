@@ -26,10 +26,11 @@ std::string evalInput(const std::vector<SweepPoint>& points);
 // unanswered are run again in halves (at most `maxChildren` children in
 // all), so the crash is pinned to the point that causes it; a child that
 // hangs past `timeoutSeconds` is killed and its points are not retried.
+// `driverArgs` go to every child (--device, --gl-provider).
 BackendSweep sweepDriver(const std::string& executable, const std::string& backend,
                          const std::vector<SweepPoint>& points,
                          const std::filesystem::path& workDir, double timeoutSeconds,
-                         int maxChildren = 40);
+                         int maxChildren = 40, const std::vector<std::string>& driverArgs = {});
 
 // One answer line of `snell eval` on a driver, as an observation (used by
 // sweepDriver; exposed for tests).

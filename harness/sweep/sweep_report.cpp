@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "sweep/listing_report.h"
 #include "sweep/sweep_summary.h"
 
 namespace snell::sweep {
@@ -108,6 +109,7 @@ void writeSweepJson(const SweepResult& result, const std::filesystem::path& path
   for (const Break& b : result.breaks) breaks.push_back(builtinBreak(result, b));
   for (const Break& b : result.methodBreaks) breaks.push_back(methodBreak(result, b));
   out["breaks"] = breaks;
+  if (result.listingsSwept) out["listings"] = listingSweepJson(result.listings);
   writeFileAtomically(path, out.dump(1) + "\n");
 }
 
@@ -136,6 +138,7 @@ void printSweepTable(const SweepResult& result, std::FILE* file) {
         c.backend, c.eta, c.closedFormDegrees, c.foundDegrees, c.foundDegrees - c.closedFormDegrees,
         c.resolutionDegrees, c.specBandDegrees, c.inputRoundingDegrees, c.wrongSide,
         c.agrees ? "yes" : "NO");
+  if (result.listingsSwept) printListingTable(result.listings, file);
 }
 
 }  // namespace snell::sweep

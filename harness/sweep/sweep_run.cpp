@@ -22,7 +22,7 @@ SweepResult runSweep(const SweepOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SweepResult result;
   result.grid = options.quick ? quickGrid() : fullGrid();
-  result.points = sweepPoints(result.grid);
+  result.points = options.builtins ? sweepPoints(result.grid) : std::vector<SweepPoint>{};
   result.sweeps.push_back(sweepOracle(result.points));
   std::filesystem::create_directories(options.outDir);
   const std::filesystem::path input = options.outDir / "sweep-input.jsonl";
@@ -32,9 +32,24 @@ SweepResult runSweep(const SweepOptions& options) {
     if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
   }
   for (const std::string& backend : options.backends)
-    result.sweeps.push_back(sweepDriver(options.executable, backend, result.points, options.outDir,
-                                        options.timeoutSeconds));
+    result.sweeps.push_back(
+        options.builtins ? sweepDriver(options.executable, backend, result.points, options.outDir,
+                                       options.timeoutSeconds, 40, options.driverArgs)
+                         : BackendSweep{backend, "", {}});
   classifyAll(result);
+  if (!options.listings.empty()) {
+    ListingSweepOptions listing;
+    listing.executable = options.executable;
+    listing.backends = options.backends;
+    listing.rules = options.rules;
+    listing.driverArgs = options.driverArgs;
+    listing.shadersDir = options.shadersDir;
+    listing.filter = options.listings == "*" ? "" : options.listings;
+    listing.outDir = options.outDir;
+    listing.quick = options.quick;
+    result.listings = runListingSweep(listing);
+    result.listingsSwept = true;
+  }
   result.wallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

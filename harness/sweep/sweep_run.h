@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sweep/critical_angle.h"
+#include "sweep/listing_sweep.h"
 #include "sweep/method_sweep.h"
 #include "sweep/sweep_classify.h"
 #include "sweep/sweep_points.h"
@@ -14,11 +15,16 @@
 namespace snell::sweep {
 
 struct SweepOptions {
-  std::string executable;             // the snell binary, whose `eval` runs each driver
-  std::vector<std::string> backends;  // drivers; the oracle is always swept
-  std::filesystem::path outDir;       // sweep-input.jsonl goes here
-  bool quick = false;                 // quickGrid() in place of fullGrid()
-  double timeoutSeconds = 300;        // per driver
+  std::string executable;               // the snell binary, whose `eval` runs each driver
+  std::vector<std::string> backends;    // drivers; the oracle is always swept
+  std::filesystem::path outDir;         // sweep-input.jsonl goes here
+  bool quick = false;                   // quickGrid() in place of fullGrid()
+  double timeoutSeconds = 300;          // per driver
+  std::vector<std::string> driverArgs;  // --device, --gl-provider, for every driver child
+  std::vector<PrecisionRules> rules;    // each driver's API rules (for the listings' oracles)
+  bool builtins = true;                 // refract() and reflect() themselves
+  std::string listings = "*";           // glob over listing ids; empty: no listings
+  std::filesystem::path shadersDir;     // the catalog
 };
 
 struct SweepResult {
@@ -29,6 +35,8 @@ struct SweepResult {
   std::vector<CriticalAngle> criticalAngles;
   std::vector<MethodSample> methodSamples;
   std::vector<Break> methodBreaks;  // Break::point indexes methodSamples
+  bool listingsSwept = false;
+  ListingSweepResult listings;
   double wallSeconds = 0;
 };
 
