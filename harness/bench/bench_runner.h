@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bench/bench_record.h"
+#include "bench/dispersion_reference_image.h"
 
 namespace snell::bench {
 
@@ -22,7 +23,7 @@ struct BenchOptions {
   int warmup = 3;                               // untimed frames after the first draw
   int repeats = 15;                             // timed frames per resolution
   // Wavelengths of a dispersion ladder's spectral reference.
-  int referenceWavelengths = 128;
+  int referenceWavelengths = kReferenceWavelengths;
   // The pixels each backend drew at the largest resolution go here (EXR),
   // when not empty.
   std::filesystem::path imagesDir;

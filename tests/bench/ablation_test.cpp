@@ -11,6 +11,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "bench/dispersion_reference_image.h"
+#include "bench/sphere_trace_image.h"
 #include "core/scene.h"
 
 namespace snell::bench {
@@ -38,6 +40,19 @@ TEST(Ablation, DoublingTheWavelengthsConvergesBelowTheNoiseBeforeTheReferenceCou
   for (std::size_t k = 1; k < rows.size(); ++k)
     EXPECT_LT(rows[k].change.rms, rows[k - 1].change.rms) << rows[k].effect;
   EXPECT_FALSE(rows.back().visible);
+}
+
+// The references the bench uses go at least as deep as the table shows
+// visible: every hit from inside before the first invisible one, and more
+// wavelengths than the first doubling that changes nothing.
+TEST(Ablation, TheBenchReferencesModelEveryVisibleStep) {
+  EXPECT_LE(static_cast<int>(table().geometric.size()), kReferenceInternalHits);
+  int enough = 0;
+  for (const AblationRow& row : table().spectral)
+    if (!row.visible && enough == 0)
+      enough = std::stoi(row.effect.substr(row.effect.rfind(' ') + 1));
+  ASSERT_GT(enough, 0);
+  EXPECT_GE(kReferenceWavelengths, enough);
 }
 
 TEST(Ablation, JsonHoldsTheRows) {
