@@ -19,8 +19,9 @@ namespace snell::cli {
 Command addSweepCommand(CLI::App& app) {
   CLI::App* sweep = app.add_subcommand(
       "sweep",
-      "Sweep refract() and reflect() over incidence angle, eta and bad inputs on the oracle and "
-      "each driver, and the Fresnel methods against exact Fresnel; classify every break");
+      "Sweep refract(), reflect() and the catalog's listings over incidence angle, eta and bad "
+      "inputs on the oracle and each driver, and the Fresnel methods against exact Fresnel; "
+      "classify every break");
   struct Options {
     std::string backend = "gl,vk";
     std::string out = "snell-out/sweep";
@@ -76,7 +77,8 @@ Command addSweepCommand(CLI::App& app) {
   sweep->footer(
       "Each break is implementation (a backend left its spec interval, or crashed), undefined\n"
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"
-      "against exact Fresnel, or outside its physical range). Exit 1 when an implementation\n"
+      "against exact Fresnel, or outside its physical range). The catalog's listings are drawn\n"
+      "at the sweep's points on each driver (--listings). Exit 1 when an implementation\n"
       "break was found.");
   return [options] {
     namespace fs = std::filesystem;
@@ -131,6 +133,8 @@ Command addSweepCommand(CLI::App& app) {
                result.wallSeconds);
     bool implementation = false;
     for (const sweep::Break& b : result.breaks)
+      implementation = implementation || b.cls == sweep::BreakClass::Implementation;
+    for (const sweep::ListingBreak& b : result.listings.breaks)
       implementation = implementation || b.cls == sweep::BreakClass::Implementation;
     return implementation ? 1 : 0;
   };

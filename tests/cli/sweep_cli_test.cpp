@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 
 TEST(SweepCli, QuickSweepOnGlAndVkFindsTheClosedFormCriticalAngles) {
   const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-{}", ::getpid());
-  const Outcome o = runSnell(fmt::format("sweep --quick --backend gl,vk --out {}", out.string()));
+  const Outcome o =
+      runSnell(fmt::format("sweep --quick --backend gl,vk --listings '' --out {}", out.string()));
   ASSERT_TRUE(o.code == 0 || o.code == 1) << o.out;
   EXPECT_NE(o.out.find("wall time:"), std::string::npos);
   EXPECT_NE(o.out.find("critical angles"), std::string::npos);
@@ -64,6 +65,52 @@ TEST(SweepCli, QuickSweepOnGlAndVkFindsTheClosedFormCriticalAngles) {
     EXPECT_TRUE(fs::exists(out / (std::string(chart) + ".png"))) << chart;
   }
   fs::remove_all(out);
+}
+
+// The Cg tutorial's listings drawn at the sweep's points: the published
+// glass-to-air eta switches to the zero vector at asin(1 / eta) on both
+// drivers, the stretched model shows its normal turned by the model matrix
+// (total internal reflection where physics refracts: the method's), and
+// no bad input crashes a driver.
+TEST(SweepCli, ListingsAreDrawnAtTheSweepPoints) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-l-{}", ::getpid());
+  const Outcome o =
+      runSnell(fmt::format("sweep --quick --no-builtins --no-charts --backend gl,vk --listings "
+                           "'cg-tutorial/*' --out {}",
+                           out.string()));
+  ASSERT_TRUE(o.code == 0 || o.code == 1) << o.out;
+  const nlohmann::json listings =
+      nlohmann::json::parse(readText(out / "sweep.json")).at("listings");
+  EXPECT_EQ(listings.at("swept").size(), 4u) << listings.at("swept").dump();
+  int published = 0;
+  for (const auto& c : listings.at("critical_angles")) {
+    if (c.at("listing") != "cg-tutorial/c7e3v-refraction-glass-to-air" || c.at("frame") != "unit")
+      continue;
+    if (std::abs(c.at("eta").get<double>() - 1.4995501) > 1e-6) continue;
+    ++published;
+    ASSERT_TRUE(c.at("found").get<bool>());
+    const double resolution =
+        c.at("first_zero_deg").get<double>() - c.at("last_refracted_deg").get<double>();
+    EXPECT_LT(resolution, 1e-4);
+    EXPECT_NEAR(c.at("found_deg").get<double>(), c.at("closed_form_deg").get<double>(), resolution);
+  }
+  EXPECT_EQ(published, 2);  // gl and vk
+  bool stretchedTir = false;
+  for (const auto& b : listings.at("breaks")) {
+    EXPECT_NE(b.at("kind"), "crash") << b.dump();
+    EXPECT_NE(b.at("class"), "implementation") << b.dump();
+    stretchedTir = stretchedTir || (b.at("kind") == "zero_where_physics_refracts" &&
+                                    b.at("frame") == "stretched" && b.at("class") == "method");
+  }
+  EXPECT_TRUE(stretchedTir);
+  fs::remove_all(out);
+}
+
+TEST(SweepCli, DeviceReachesTheDrivers) {
+  const Outcome o =
+      runSnell("sweep --quick --no-charts --backend vk --device 99 --out /tmp/snell-sweep-device");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--device 99"), std::string::npos) << o.out;
 }
 
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
