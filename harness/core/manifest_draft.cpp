@@ -62,8 +62,7 @@ std::string stageFile(const fs::path& dir, const std::string& given, const char*
 }
 
 void requireMain(const std::string& source, const fs::path& path) {
-  static const std::regex kMain(R"(\bvoid\s+main\s*\()");
-  if (!std::regex_search(withoutComments(source), kMain))
+  if (mainBody(withoutComments(source)) == std::string::npos)
     throw UsageError(
         fmt::format("{}: no `void main()`; snell init reads GLSL stage files: check "
                     "that this is one",
