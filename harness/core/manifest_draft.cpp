@@ -437,9 +437,8 @@ std::string draftManifest(const DraftRequest& request) {
   std::vector<Line> head;
   head.push_back({"id", tomlString(request.id.empty() ? defaultId(dir) : request.id),
                   "unique; case ids are <id>/<scene>"});
-  head.push_back({"title",
-                  tomlString(dir.filename().empty() ? dir.parent_path().filename().string()
-                                                    : dir.filename().string()),
+  // The folder's own name, also for "." or a trailing slash.
+  head.push_back({"title", tomlString(fs::weakly_canonical(fs::absolute(dir)).filename().string()),
                   "one line for people"});
   writeLines(out, head);
   out << "# Where the listing comes from: the document or URL, and the listing or\n"
