@@ -1,5 +1,6 @@
 // The two text transforms that rewrite a listing before it is compiled: the
-// fragment probe adapter and the Vulkan legacy adapter. The input's first
+// fragment probe adapter and the Vulkan legacy adapter; and the reader of
+// main()'s statements that `snell init` drafts captures from. The input's first
 // byte picks the probe's line, type and output style; the rest is the
 // source. The probe adapter may throw UsageError for a line it cannot use;
 // anything else (a crash, another exception, a sanitizer report, a line
@@ -9,9 +10,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "backends/vk/legacy_adapter.h"
 #include "core/errors.h"
 #include "core/fragment_probes.h"
-#include "backends/vk/legacy_adapter.h"
+#include "core/glsl_statements.h"
 
 namespace {
 
@@ -44,6 +46,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // Writes are appended to existing lines: the line count never changes.
     if (lineBreaks(probed) != lineBreaks(source)) std::abort();
   } catch (const snell::UsageError&) {
+  }
+  // Every statement lies within the source, in order, ending where it starts or later.
+  int previous = 0;
+  for (const snell::GlslStatement& s : snell::mainStatements(source)) {
+    const int last = static_cast<int>(lineBreaks(source)) + 1;
+    if (s.firstLine < previous || s.firstLine > s.lastLine || s.lastLine > last || s.depth < 0)
+      std::abort();
+    previous = s.lastLine;
   }
   return 0;
 }

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
+#include <string_view>
 
 #include "core/glsl_declarations.h"
 
@@ -15,16 +15,46 @@ int lineAt(const std::string& text, std::size_t at) {
   return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
 }
 
+std::size_t skipSpace(const std::string& text, std::size_t at) {
+  while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at]))) ++at;
+  return at;
+}
+
+// Whether `word` is at `at` as a whole identifier.
+bool wordAt(const std::string& text, std::size_t at, std::string_view word) {
+  return text.compare(at, word.size(), word) == 0 && (at == 0 || !identifierChar(text[at - 1])) &&
+         (at + word.size() >= text.size() || !identifierChar(text[at + word.size()]));
+}
+
 }  // namespace
+
+std::size_t mainBody(const std::string& text) {
+  // `void main()` or `void main(void)`, then `{`: scanned by hand, as a
+  // regular expression would recurse once per character of a long space run.
+  for (std::size_t at = text.find("main"); at != std::string::npos;
+       at = text.find("main", at + 1)) {
+    if (!wordAt(text, at, "main")) continue;
+    std::size_t before = at;
+    while (before > 0 && std::isspace(static_cast<unsigned char>(text[before - 1]))) --before;
+    if (before == at || before < 4 || !wordAt(text, before - 4, "void")) continue;
+    std::size_t k = skipSpace(text, at + 4);
+    if (k >= text.size() || text[k] != '(') continue;
+    k = skipSpace(text, k + 1);
+    if (wordAt(text, k, "void")) k = skipSpace(text, k + 4);
+    if (k >= text.size() || text[k] != ')') continue;
+    k = skipSpace(text, k + 1);
+    if (k < text.size() && text[k] == '{') return k + 1;
+  }
+  return std::string::npos;
+}
 
 std::vector<GlslStatement> mainStatements(const std::string& source) {
   const std::string text = withoutComments(source);
-  static const std::regex kMain(R"(\bvoid\s+main\s*\(\s*(void\s*)?\)\s*\{)");
-  std::smatch match;
-  if (!std::regex_search(text, match, kMain)) return {};
+  const std::size_t body = mainBody(text);
+  if (body == std::string::npos) return {};
   std::vector<GlslStatement> out;
   int braces = 1, parens = 0;
-  std::size_t start = static_cast<std::size_t>(match.position(0) + match.length(0));
+  std::size_t start = body;
   for (std::size_t k = start; k < text.size() && braces > 0; ++k) {
     const char c = text[k];
     if (c == '(') ++parens;

@@ -62,8 +62,7 @@ std::string stageFile(const fs::path& dir, const std::string& given, const char*
 }
 
 void requireMain(const std::string& source, const fs::path& path) {
-  static const std::regex kMain(R"(\bvoid\s+main\s*\()");
-  if (!std::regex_search(withoutComments(source), kMain))
+  if (mainBody(withoutComments(source)) == std::string::npos)
     throw UsageError(
         fmt::format("{}: no `void main()`; snell init reads GLSL stage files: check "
                     "that this is one",
@@ -438,9 +437,8 @@ std::string draftManifest(const DraftRequest& request) {
   std::vector<Line> head;
   head.push_back({"id", tomlString(request.id.empty() ? defaultId(dir) : request.id),
                   "unique; case ids are <id>/<scene>"});
-  head.push_back({"title",
-                  tomlString(dir.filename().empty() ? dir.parent_path().filename().string()
-                                                    : dir.filename().string()),
+  // The folder's own name, also for "." or a trailing slash.
+  head.push_back({"title", tomlString(fs::weakly_canonical(fs::absolute(dir)).filename().string()),
                   "one line for people"});
   writeLines(out, head);
   out << "# Where the listing comes from: the document or URL, and the listing or\n"

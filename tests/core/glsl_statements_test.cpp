@@ -44,3 +44,18 @@ TEST(GlslStatements, IdentifiersSkipNumbersAndSwizzles) {
 
 }  // namespace
 }  // namespace snell
+
+namespace snell {
+namespace {
+
+TEST(GlslStatements, MainIsFoundOnlyAsVoidMainWithItsBody) {
+  EXPECT_EQ(mainBody("void main(void) {}"), 17u);
+  EXPECT_EQ(mainBody("void\n  main ( )\n{ }"), 17u);
+  EXPECT_EQ(mainBody("void mainly() {} float main2() {}"), std::string::npos);
+  EXPECT_EQ(mainBody("int main() {}"), std::string::npos);
+  EXPECT_EQ(mainBody("void main();"), std::string::npos);  // a prototype has no body
+  EXPECT_EQ(mainBody("void main();\nvoid main() { }"), 26u);
+}
+
+}  // namespace
+}  // namespace snell

@@ -123,6 +123,32 @@ TEST_F(ManifestTest, AManifestMayNameBothOracles) {
   EXPECT_EQ(handWritten.oracle, "orange_book_fresnel");
 }
 
+// The derived oracle follows the listing through both stages; a
+// hand-written one mirrors one stage, so both captures beside it are refused.
+TEST_F(ManifestTest, OnlyTheDerivedOracleAloneMayCaptureBothStages) {
+  std::string text = kValid;
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+  };
+  replace("stages = { vertex = \"a.vert\" }",
+          "stages = { vertex = \"a.vert\", fragment = \"a.frag\" }");
+  replace("vertex = [\"Reflect\"]",
+          "vertex = [\"Reflect\"]\nfragment = [{ name = \"R\", type = \"vec3\", line = 3 }]");
+  const std::string derived = [&] {
+    std::string t = text;
+    const std::size_t at = t.find("oracle =");
+    return t.replace(at, t.find('\n', at) - at, "");
+  }();
+  const Manifest m = loadManifest(write(derived));
+  EXPECT_EQ(m.captureVertex, std::vector<std::string>{"Reflect"});
+  ASSERT_EQ(m.captureFragment.size(), 1u);
+  const std::string message = errorOf(text);
+  EXPECT_NE(message.find("lists both vertex outputs and fragment values, and oracle "
+                         "`orange_book_fresnel` mirrors one stage"),
+            std::string::npos)
+      << message;
+}
+
 TEST_F(ManifestTest, AnOracleFieldOfTheWrongShapeNamesItsLine) {
   for (const char* bad : {"oracle = 3", "oracle = []", "oracle = [\"a\", \"b\"]",
                           "oracle = [\"a\", 3]", "oracle = [\"a\", \"derived\", \"c\"]"}) {
