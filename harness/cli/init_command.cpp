@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "core/errors.h"
 #include "core/manifest_draft.h"
+#include "derived/lower_glsl.h"
 
 namespace snell::cli {
 
@@ -27,6 +29,20 @@ Command addInitCommand(CLI::App& app) {
   init->add_flag("--force", options->force, "Replace an existing DIR/manifest.toml");
   return [options] {
     options->request.dir = options->dir;
+    // Captured only what the derived oracle can gate; its refusal, without
+    // the advice, says why not.
+    options->request.whyNotGated = [](const std::string& file, const std::string& text,
+                                      bool fragment, const std::string& name, int line) {
+      try {
+        derived::lowerOutputs(
+            {file, text, fragment ? derived::Stage::Fragment : derived::Stage::Vertex},
+            {{name, line}});
+        return std::string();
+      } catch (const UsageError& error) {
+        const std::string what = error.what();
+        return what.substr(0, what.find("; give the listing"));
+      }
+    };
     const std::filesystem::path path = writeDraftManifest(options->request, options->force);
     fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
                path.string(), options->dir);

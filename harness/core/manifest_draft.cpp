@@ -314,14 +314,26 @@ std::vector<Capture> fragmentCaptures(const Stage& fragment, std::vector<std::st
   return all;
 }
 
-void captureSection(std::ostringstream& out, const Stage& vertex,
+void captureSection(std::ostringstream& out, const DraftRequest& request, const Stage& vertex,
                     const std::optional<Stage>& fragment) {
+  std::vector<std::string> leftOut;
+  const auto gated = [&](const Stage& stage, bool isFragment, const std::string& name, int line) {
+    const std::string why =
+        request.whyNotGated ? request.whyNotGated(stage.file, stage.source, isFragment, name, line)
+                            : std::string();
+    if (!why.empty()) leftOut.push_back(fmt::format("{} ({})", name, why));
+    return why.empty();
+  };
   std::vector<std::string> outputs;
   for (const GlslDeclaration& d : vertex.declarations)
-    if (d.qualifier == "out" || d.qualifier == "varying") outputs.push_back(tomlString(d.name));
-  std::vector<std::string> leftOut;
-  const std::vector<Capture> captures =
+    if ((d.qualifier == "out" || d.qualifier == "varying") && gated(vertex, false, d.name, 0))
+      outputs.push_back(tomlString(d.name));
+  std::vector<Capture> captures =
       fragment ? fragmentCaptures(*fragment, leftOut) : std::vector<Capture>{};
+  std::erase_if(captures, [&](const Capture& c) {
+    const bool input = c.comment.rfind("input", 0) == 0;
+    return !input && !gated(*fragment, true, c.name, c.line);
+  });
   if (outputs.empty() && captures.empty())
     throw UsageError(fmt::format(
         "{}{}{}: nothing to read back: the vertex stage declares no outputs and the fragment "
@@ -455,7 +467,7 @@ std::string draftManifest(const DraftRequest& request) {
          "# what is read back to what the GLSL and Vulkan precision rules allow.\n";
   inputsSection(out, vertex);
   uniformsSection(out, vertex, fragment);
-  captureSection(out, vertex, fragment);
+  captureSection(out, request, vertex, fragment);
   casesSection(out, vertex, fragment.has_value());
   return out.str();
 }

@@ -7,6 +7,7 @@
 // refuses, naming its line, until the author replaces it. No `oracle` line:
 // the derived oracle follows the listing's own text.
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace snell {
@@ -16,6 +17,14 @@ struct DraftRequest {
   std::string vertexFile;    // relative to dir; empty: the one *.vert file there
   std::string fragmentFile;  // relative to dir; empty: the one *.frag file there, if any
   std::string id;            // empty: the folder's parent and name ("learnopengl/refraction")
+  // Why the oracle could not gate the value `name` of a stage after `line`
+  // (0: at the end of main()), or "" when it can: a value that goes
+  // through inverse(), whose precision GLSL leaves undefined, is not
+  // captured. The command asks the derived oracle (harness/derived), which
+  // core does not know; unset, every candidate is captured.
+  std::function<std::string(const std::string& file, const std::string& text, bool fragment,
+                            const std::string& name, int line)>
+      whyNotGated;
 };
 
 // The manifest text for the listing in request.dir. Throws UsageError (one

@@ -644,8 +644,10 @@ class Lowering {
     if (node.getOp() == glslang::EOpMatrixInverse) {
       if (options_.doubleOnly) return builder_.inverse(operand, line);
       Value value{shapeOf(node), {}, {}};
-      value.refusal = builder_.unsupported(
-          "inverse(), to which GLSL 4.60 section 4.7.1 gives no precision, in a gated value", line);
+      value.refusal = builder_.located(
+          "inverse() has no precision in GLSL 4.60 section 4.7.1, so no interval bounds a value "
+          "computed with it",
+          line);
       return value;
     }
     return builder_.unary(node.getOp(), operand, shapeOf(node), line,

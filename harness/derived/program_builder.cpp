@@ -365,6 +365,10 @@ Value ProgramBuilder::select(const Value& condition, const Value& then, const Va
 }
 
 std::string ProgramBuilder::unsupported(const std::string& what, int line) const {
+  return located(what + " is outside the derived oracle's subset", line);
+}
+
+std::string ProgramBuilder::located(const std::string& message, int line) const {
   std::size_t begin = 0;
   for (int k = 1; k < line && begin != std::string::npos; ++k) {
     begin = text_.find('\n', begin);
@@ -378,11 +382,8 @@ std::string ProgramBuilder::unsupported(const std::string& what, int line) const
     const std::size_t last = quoted.find_last_not_of(" \t\r");
     quoted = first == std::string::npos ? "" : quoted.substr(first, last - first + 1);
   }
-  if (quoted.empty())
-    return fmt::format("{}:{}: {} is outside the derived oracle's subset", program_.file, line,
-                       what);
-  return fmt::format("{}:{}: {} is outside the derived oracle's subset: `{}`", program_.file, line,
-                     what, quoted);
+  if (quoted.empty()) return fmt::format("{}:{}: {}", program_.file, line, message);
+  return fmt::format("{}:{}: {}: `{}`", program_.file, line, message, quoted);
 }
 
 Program ProgramBuilder::finish(std::vector<Variable> outputs) {

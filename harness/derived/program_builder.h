@@ -77,6 +77,8 @@ class ProgramBuilder {
 
   // "FILE:LINE: <what> is outside the derived oracle's subset: `<the line>`".
   std::string unsupported(const std::string& what, int line) const;
+  // "FILE:LINE: <message>: `<the line>`".
+  std::string located(const std::string& message, int line) const;
 
  private:
   std::vector<Reg> emit(OpCode code, std::vector<Reg> args, int results, int line,
