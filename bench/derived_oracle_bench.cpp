@@ -2,7 +2,9 @@
 // vertex stage over the sphere scene, double, float and fp32 intervals
 // together, as a case evaluates it. The derived program is lowered once
 // (as a case would), outside the timed loop; lowering is timed on its own.
-// Run: build/bench/snell_bench --benchmark_filter=Fresnel14_1 --benchmark_repetitions=5
+// The reference image drawn from the listing's own text (fragment stage in
+// double per pixel) beside referenceImageOfSphere (oracle_bench.cpp).
+// Run: build/bench/snell_bench --benchmark_filter='Fresnel14_1|ImageOfSphere' --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 
@@ -10,7 +12,9 @@
 #include <sstream>
 
 #include "fresnel_inputs.h"
+#include "derived/derived_drawing.h"
 #include "derived/derived_vertex_oracle.h"
+#include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 
 namespace snell {
@@ -57,6 +61,37 @@ void lowerFresnel14_1(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(derived::lowerShader(in.source));
 }
 BENCHMARK(lowerFresnel14_1)->Unit(benchmark::kMicrosecond);
+
+std::string fresnelFragmentSource() {
+  std::ifstream file(std::string(SNELL_SOURCE_ROOT) +
+                     "/shaders/orange-book/14.1-fresnel/fresnel.frag");
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+void derivedReferenceImageOfSphere(benchmark::State& state) {
+  const Fresnel14_1 in;
+  const auto vertex = derived::makeDerivedDrawingVertexOracle(in.source);
+  const auto fragment = derived::makeDerivedFragmentOracle(
+      {"fresnel.frag", fresnelFragmentSource(), derived::Stage::Fragment});
+  for (auto _ : state) {
+    ReferenceInput input{"derived",
+                         in.uniforms,
+                         in.constants,
+                         in.attributes,
+                         in.scene.vertexCount,
+                         in.scene.indices,
+                         {{"Cubemap", in.scene.environment.get()}},
+                         in.scene.width,
+                         in.scene.height};
+    input.vertex = vertex.get();
+    input.fragment = fragment.get();
+    benchmark::DoNotOptimize(renderReferenceImage(input));
+  }
+  state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);
+}
+BENCHMARK(derivedReferenceImageOfSphere)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace snell
