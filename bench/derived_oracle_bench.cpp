@@ -4,16 +4,17 @@
 // (as a case would), outside the timed loop; lowering is timed on its own.
 // The reference image drawn from the listing's own text (fragment stage in
 // double per pixel) beside referenceImageOfSphere (oracle_bench.cpp).
-// Run: build/bench/snell_bench --benchmark_filter='Fresnel14_1|ImageOfSphere' --benchmark_repetitions=5
+// Run: build/bench/snell_bench --benchmark_filter='Fresnel14_1|ImageOfSphere'
+// --benchmark_repetitions=5
 //        --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "fresnel_inputs.h"
 #include "derived/derived_drawing.h"
 #include "derived/derived_vertex_oracle.h"
+#include "fresnel_inputs.h"
 #include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 
@@ -76,18 +77,8 @@ void derivedReferenceImageOfSphere(benchmark::State& state) {
   const auto fragment = derived::makeDerivedFragmentOracle(
       {"fresnel.frag", fresnelFragmentSource(), derived::Stage::Fragment});
   for (auto _ : state) {
-    ReferenceInput input{"derived",
-                         in.uniforms,
-                         in.constants,
-                         in.attributes,
-                         in.scene.vertexCount,
-                         in.scene.indices,
-                         {{"Cubemap", in.scene.environment.get()}},
-                         in.scene.width,
-                         in.scene.height};
-    input.vertex = vertex.get();
-    input.fragment = fragment.get();
-    benchmark::DoNotOptimize(renderReferenceImage(input));
+    benchmark::DoNotOptimize(
+        renderReferenceImage(in.referenceInput("derived", vertex.get(), fragment.get())));
   }
   state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);
 }

@@ -3,6 +3,7 @@
 // what the oracle benchmarks evaluate.
 #include "core/scene.h"
 #include "core/values.h"
+#include "oracle/reference/reference_image.h"
 
 namespace snell {
 
@@ -17,6 +18,23 @@ struct FresnelInputs {
   FresnelInputs() {
     attributes["MCvertex"] = scene.attributes.at("position");
     attributes["MCnormal"] = scene.attributes.at("normal");
+  }
+  // The sphere's reference image input for the listing's parts: those
+  // registered under `oracle`, or `vertex` and `fragment` when given.
+  ReferenceInput referenceInput(const std::string& oracle, const VertexOracle* vertex = nullptr,
+                                const FragmentOracle* fragment = nullptr) const {
+    ReferenceInput input{oracle,
+                         uniforms,
+                         constants,
+                         attributes,
+                         scene.vertexCount,
+                         scene.indices,
+                         {{"Cubemap", scene.environment.get()}},
+                         scene.width,
+                         scene.height};
+    input.vertex = vertex;
+    input.fragment = fragment;
+    return input;
   }
 };
 

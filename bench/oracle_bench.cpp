@@ -24,16 +24,7 @@ BENCHMARK(vertexOracleOnSphere)->Unit(benchmark::kMillisecond);
 void referenceImageOfSphere(benchmark::State& state) {
   const FresnelInputs in;
   for (auto _ : state) {
-    ReferenceInput input{"orange_book_fresnel",
-                         in.uniforms,
-                         in.constants,
-                         in.attributes,
-                         in.scene.vertexCount,
-                         in.scene.indices,
-                         {{"Cubemap", in.scene.environment.get()}},
-                         in.scene.width,
-                         in.scene.height};
-    benchmark::DoNotOptimize(renderReferenceImage(input));
+    benchmark::DoNotOptimize(renderReferenceImage(in.referenceInput("orange_book_fresnel")));
   }
   state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);
 }

@@ -24,7 +24,7 @@ struct DraftRequest {
   // core does not know; unset, every candidate is captured.
   std::function<std::string(const std::string& file, const std::string& text, bool fragment,
                             const std::string& name, int line)>
-      whyNotGated;
+      whyNotGated = {};
 };
 
 // The manifest text for the listing in request.dir. Throws UsageError (one

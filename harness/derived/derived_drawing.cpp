@@ -18,17 +18,8 @@ class DrawingVertexOracle final : public VertexOracle {
  public:
   explicit DrawingVertexOracle(Program program) : program_(std::move(program)) {}
 
-  std::vector<std::string> outputs() const override {
-    std::vector<std::string> names;
-    for (const Variable& output : program_.outputs) names.push_back(output.name);
-    return names;
-  }
-
-  std::vector<std::string> inputs() const override {
-    std::vector<std::string> names;
-    for (const Binding& input : program_.inputs) names.push_back(input.name);
-    return names;
-  }
+  std::vector<std::string> outputs() const override { return outputNames(program_); }
+  std::vector<std::string> inputs() const override { return inputNames(program_); }
 
   // The reference values only (strict, lo and hi stay empty): the reference
   // renderer interpolates `reference` and leaves out what is `undefined`.

@@ -11,17 +11,8 @@ class DerivedVertexOracle final : public VertexOracle {
  public:
   explicit DerivedVertexOracle(Program program) : program_(std::move(program)) {}
 
-  std::vector<std::string> outputs() const override {
-    std::vector<std::string> names;
-    for (const Variable& output : program_.outputs) names.push_back(output.name);
-    return names;
-  }
-
-  std::vector<std::string> inputs() const override {
-    std::vector<std::string> names;
-    for (const Binding& input : program_.inputs) names.push_back(input.name);
-    return names;
-  }
+  std::vector<std::string> outputs() const override { return outputNames(program_); }
+  std::vector<std::string> inputs() const override { return inputNames(program_); }
 
   std::vector<OracleVarying> evaluate(const OracleInput& input) const override {
     return evaluateVaryings(program_, input.uniforms, input.attributes, input.vertexCount,

@@ -85,6 +85,11 @@ struct Binding {
   int columns = 1;  // a matrix's columns (components / columns rows)
 };
 
+struct Program;
+// The names of a program's outputs and of the per-sample inputs it reads.
+std::vector<std::string> outputNames(const Program& program);
+std::vector<std::string> inputNames(const Program& program);
+
 struct Program {
   std::string file;  // the source, for messages
   std::vector<Op> ops;

@@ -412,6 +412,18 @@ Program ProgramBuilder::finish(std::vector<Variable> outputs) {
   return program;
 }
 
+std::vector<std::string> outputNames(const Program& program) {
+  std::vector<std::string> names;
+  for (const Variable& output : program.outputs) names.push_back(output.name);
+  return names;
+}
+
+std::vector<std::string> inputNames(const Program& program) {
+  std::vector<std::string> names;
+  for (const Binding& input : program.inputs) names.push_back(input.name);
+  return names;
+}
+
 const char* opCodeName(OpCode code) {
   static constexpr const char* kNames[] = {
       "literal",   "uniform", "input",       "add",       "sub",         "mul",
