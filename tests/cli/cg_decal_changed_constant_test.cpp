@@ -17,10 +17,15 @@ std::filesystem::path editedCopy(const std::string& from, const std::string& to)
 
 void expectEveryImageFails(const std::filesystem::path& dir) {
   const std::vector<edited::EditedResult> results = edited::runOnBothBackends(dir);
-  ASSERT_EQ(results.size(), 4u);  // sphere and torus on gl and vk
+  std::size_t images = 0;
   for (const edited::EditedResult& r : results) {
     const std::string where = r.backend + " " + r.c.id + "\n" + r.result.message;
-    ASSERT_TRUE(r.c.spec.has("image")) << r.c.id;
+    if (!r.c.spec.has("image")) {
+      // The stretched scene reads vectors only: the fragment edit is not seen.
+      EXPECT_EQ(r.result.status, Status::Pass) << where;
+      continue;
+    }
+    ++images;
     EXPECT_EQ(r.result.status, Status::Fail) << where;
     // The vertex stage was not edited: its vectors still pass.
     EXPECT_EQ(r.result.componentsFailed(), 0u) << where;
@@ -30,6 +35,7 @@ void expectEveryImageFails(const std::filesystem::path& dir) {
     EXPECT_EQ(r.result.images[1].against, "golden");
     EXPECT_EQ(r.result.images[1].verdict, ImageVerdict::Fail) << where;
   }
+  EXPECT_EQ(images, 4u);  // sphere and torus on gl and vk
 }
 
 TEST(CgDecalChangedConstant, SwappedMixArgumentsFailOnBothBackends) {

@@ -21,7 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kFresnelCases = 3;  // sphere, sweep, torus
+constexpr std::size_t kFresnelCases = 4;  // sphere, sweep, torus, stretched
 
 // The published Listing 14.1 beside the endless-loop fault.
 fs::path shadersWithFault() {
