@@ -142,8 +142,9 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
            fmt::format("with points ps 0.6 lc rgb '{}'", classColour(classKind.first))});
     }
     addChart(batch, written, outDir, stem,
-             mapAxes + fmt::format("set title '{} on {}: where it breaks, colour by class "
-                                   "(red implementation, blue undefined, orange method)'\n",
+             mapAxes + fmt::format("set title '{} on {}: where it breaks'\n"
+                                   "set key below maxrows 4 title 'kind (class: red "
+                                   "implementation, blue undefined, orange method)'\n",
                                    quotable(key.first), quotable(key.second)),
              withCriticalAngle(plotted));
   }

@@ -176,7 +176,7 @@ TEST_F(SweepSection, AMalformedSweepJsonIsOneClearErrorExit2) {
   const auto [code, out] = report();
   EXPECT_EQ(code, 2) << out;
   EXPECT_NE(out.find((dir_ / "sweep" / "sweep.json").string()), std::string::npos) << out;
-  EXPECT_NE(out.find("line 3"), std::string::npos) << out;
+  EXPECT_NE(out.find("line 2"), std::string::npos) << out;
   EXPECT_FALSE(fs::exists(dir_ / "html" / "index.html"));
 
   // Valid JSON of the wrong shape is the same kind of error.
