@@ -51,15 +51,19 @@ std::string pointText(const json& b) {
 }
 
 // How bad a break is, for picking the worst of a group: a non-finite value
-// first, then the first number of the detail, which each kind words as its
-// own measure (slack, degrees off, the jump, the cosine to the normal).
+// first, then the measure each kind words into its detail: the number after
+// the first "= " ("1 - eta^2 sin^2 = 0.93"), else the first number (slack,
+// degrees off, the jump, the cosine to the normal). Larger is worse; for
+// the few kinds where it is not (dot(N, H) toward 0) the worst is a guess.
 double severity(const json& b) {
   for (const json& x : b.at("value"))
     if (x.is_string()) return INFINITY;
-  static const std::regex firstNumber(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
+  static const std::regex number(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
   const std::string detail = b.at("detail").get<std::string>();
+  const std::size_t equals = detail.find("= ");
+  const std::string measured = equals == std::string::npos ? detail : detail.substr(equals);
   std::smatch m;
-  if (!std::regex_search(detail, m, firstNumber)) return 0;
+  if (!std::regex_search(measured, m, number)) return 0;
   return std::abs(std::stod(m.str()));
 }
 
