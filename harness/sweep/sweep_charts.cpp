@@ -143,8 +143,7 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
     }
     addChart(batch, written, outDir, stem,
              mapAxes + fmt::format("set title '{} on {}: where it breaks'\n"
-                                   "set key below maxrows 4 title 'kind (class: red "
-                                   "implementation, blue undefined, orange method)'\n",
+                                   "set key outside right title 'kind (class)'\n",
                                    quotable(key.first), quotable(key.second)),
              withCriticalAngle(plotted));
   }
