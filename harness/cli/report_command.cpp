@@ -1,4 +1,5 @@
-// `snell report RESULTS... -o DIR`: the self-contained HTML report.
+// `snell report RESULTS... -o DIR [--sweep SWEEP]`: the self-contained HTML
+// report.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -18,6 +19,7 @@ Command addReportCommand(CLI::App& app) {
     std::string out;
     std::string images = "snell-out";
     std::string shaders = defaultShadersDir();
+    std::string sweep;
   };
   auto options = std::make_shared<Options>();
   sub->add_option("results", options->results,
@@ -30,6 +32,10 @@ Command addReportCommand(CLI::App& app) {
                   "snell-out)");
   sub->add_option("--shaders", options->shaders, "Folder of listings (titles, fail thresholds)")
       ->check(CLI::ExistingDirectory);
+  sub->add_option("--sweep", options->sweep,
+                  "A `snell sweep --out` folder: each listing's breaks and the sweep's charts "
+                  "beside it")
+      ->check(CLI::ExistingDirectory);
   return [options] {
     const auto start = std::chrono::steady_clock::now();
     std::vector<ReportRun> runs;
@@ -38,6 +44,7 @@ Command addReportCommand(CLI::App& app) {
     ReportOptions report;
     report.imagesDir = options->images;
     report.catalog = expandCases(manifests, "");
+    report.sweepDir = options->sweep;
     report.title = fmt::format("{}", fmt::join(options->results, ", "));
     const ReportStats stats = writeHtmlReport(runs, report, options->out);
     fmt::print(

@@ -19,6 +19,7 @@
 #include "report/heat_map_chart.h"
 #include "report/report_template.h"
 #include "report/slack_histogram_chart.h"
+#include "report/sweep_findings.h"
 
 namespace snell {
 namespace {
@@ -34,8 +35,8 @@ std::string listingOf(const std::string& caseId) {
   return slash == std::string::npos ? caseId : caseId.substr(0, slash);
 }
 
-std::string anchorOf(const std::string& caseId) {
-  std::string a = "case-";
+std::string anchorOf(const std::string& caseId, const std::string& prefix = "case-") {
+  std::string a = prefix;
   for (char c : caseId) a += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
   return a;
 }
@@ -89,6 +90,9 @@ class ReportBuilder {
   }
 
   std::string render(ReportStats& stats) {
+    // Read first: a malformed sweep stops the report before any drawing.
+    std::optional<SweepFindings> sweep;
+    if (!options_.sweepDir.empty()) sweep = readSweepFindings(options_.sweepDir);
     data page;
     page.set("title", options_.title);
     page.set("generated", generatedAt());
@@ -111,7 +115,9 @@ class ReportBuilder {
     list columns;
     for (const Column& c : columns_) columns.push_back(data("name", c.name));
     page.set("columns", columns);
-    page.set("listings", listings());
+    page.set("listings", listings(sweep.has_value()));
+    page.set("has_sweep", sweep.has_value());
+    if (sweep) page.set("sweep", sweepSection(*sweep, stats));
     page.set("matrix", matrix());
     page.set("drivers", drivers());
     // Cases (charts are queued now and drawn in one gnuplot run below).
@@ -164,7 +170,7 @@ class ReportBuilder {
                        time.hours().count(), time.minutes().count());
   }
 
-  list listings() const {
+  list listings(bool swept) const {
     std::vector<std::string> names;
     std::map<std::string, std::map<std::size_t, std::map<std::string, std::size_t>>> counts;
     std::map<std::string, std::map<std::size_t, Status>> worst;
@@ -181,6 +187,7 @@ class ReportBuilder {
     for (const std::string& name : names) {
       data row;
       row.set("name", name);
+      if (swept) row.set("sweep_anchor", anchorOf(name, "sweep-"));
       list cells;
       for (std::size_t k = 0; k < columns_.size(); ++k) {
         data cell;
@@ -195,6 +202,59 @@ class ReportBuilder {
       rows.push_back(row);
     }
     return rows;
+  }
+
+  std::vector<std::string> listingNames() const {
+    std::vector<std::string> names;
+    for (const std::string& id : caseOrder_)
+      if (std::find(names.begin(), names.end(), listingOf(id)) == names.end())
+        names.push_back(listingOf(id));
+    return names;
+  }
+
+  // Each listing of the report with its breaks from the sweep, then the
+  // sweep's own charts. Charts are already drawn: read now.
+  data sweepSection(const SweepFindings& sweep, ReportStats& stats) {
+    data section;
+    section.set("dir", sweep.dir.string());
+    list rows;
+    for (const std::string& name : listingNames()) {
+      const ListingFindings found = findingsFor(sweep, name);
+      data row;
+      row.set("name", name);
+      row.set("anchor", anchorOf(name, "sweep-"));
+      row.set("covered", found.covered);
+      row.set("why", found.why);
+      std::size_t total = 0;
+      list groups;
+      for (const SweepGroup& g : found.groups) {
+        data group;
+        group.set("backend", g.backend);
+        group.set("class", g.cls);
+        group.set("count", std::to_string(g.count));
+        group.set("kinds", g.kinds);
+        list first;
+        for (const SweepPointText& p : g.first) first.push_back(data("text", p.text));
+        group.set("first", first);
+        group.set("worst", g.worst.text);
+        groups.push_back(group);
+        total += g.count;
+      }
+      row.set("groups", groups);
+      row.set("has_groups", !found.groups.empty());
+      row.set("total", std::to_string(total));
+      row.set("charts", sweepCharts(found.charts, stats));
+      rows.push_back(row);
+    }
+    section.set("listings", rows);
+    section.set("charts", sweepCharts(sweep.charts, stats));
+    return section;
+  }
+
+  list sweepCharts(const std::vector<SweepChart>& charts, ReportStats& stats) {
+    std::vector<PendingPicture> pending;
+    for (const SweepChart& c : charts) pending.push_back({c.caption, "chart", c.png, "image/png"});
+    return pictures(pending, stats);
   }
 
   list matrix() const {

@@ -5,7 +5,8 @@
 // drivers, and per case the tolerance report (slack per output and its
 // histogram, the worst samples, image errors, masked pixels by reason) with
 // the reference, rendered and heat-map images side by side, and a heat map
-// for every pair of backends that rendered the case.
+// for every pair of backends that rendered the case; with a sweep, where
+// each listing breaks (per backend and class) and the sweep's charts.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,6 +27,8 @@ struct ReportOptions {
   std::filesystem::path imagesDir;
   std::vector<Case> catalog;  // for titles, sources and fail thresholds
   std::string title;
+  // A `snell sweep --out` folder: each listing's breaks beside it. Empty: none.
+  std::filesystem::path sweepDir;
 };
 
 struct ReportStats {
@@ -34,7 +37,8 @@ struct ReportStats {
 };
 
 // Writes outDir/index.html (charts are drawn in outDir/work, removed after).
-// Throws SetupError when gnuplot is missing or fails.
+// Throws SetupError when gnuplot is missing or fails, UsageError when the
+// sweep's JSON is missing or malformed.
 ReportStats writeHtmlReport(const std::vector<ReportRun>& runs, const ReportOptions& options,
                             const std::filesystem::path& outDir);
 

@@ -2,11 +2,13 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 
 #include "report/gnuplot_batch.h"
+#include "report/sweep_findings.h"
 
 namespace snell::sweep {
 namespace {
@@ -102,6 +104,51 @@ bool charted(double eta) {
          std::abs(eta - 1 / 1.5) < 1e-9;
 }
 
+// Inside a gnuplot single-quoted string.
+std::string quotable(std::string text) {
+  std::replace(text.begin(), text.end(), '\'', '"');
+  return text;
+}
+
+// Class as colour (the same as the HTML report's), kind as point shape.
+std::string classColour(const std::string& cls) {
+  if (cls == "implementation") return "#d62728";
+  if (cls == "undefined") return "#5b5bd6";
+  return "#ff7f0e";  // method
+}
+
+// One map per listing and backend over angle x eta: where the listing
+// breaks, coloured by whose fault. Breaks of a draw with no eta (0) have
+// no place on the map.
+void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
+                    const ListingSweepResult& listings, const std::string& mapAxes) {
+  using Curves = std::map<std::pair<std::string, std::string>, std::string>;  // (class, kind)
+  std::map<std::pair<std::string, std::string>, Curves> maps;                 // (listing, backend)
+  for (const ListingBreak& b : listings.breaks) {
+    if (!(b.eta > 0) || !std::isfinite(b.angleDegrees)) continue;
+    const std::string kind = b.kind + (b.frame == "unit" ? "" : ", " + b.frame);
+    maps[{b.listing, b.backend}][{breakClassName(b.cls), kind}] +=
+        fmt::format("{:.10g} {:.10g}\n", b.angleDegrees, b.eta);
+  }
+  for (const auto& [key, curves] : maps) {
+    const std::string stem = listingMapStem(key.first, key.second);
+    std::vector<Curve> plotted;
+    int n = 0;
+    for (const auto& [classKind, rows] : curves) {
+      const std::string file = fmt::format("sweep-data/{}-{}.dat", stem, n++);
+      std::ofstream(outDir / file) << rows;
+      plotted.push_back(
+          {fmt::format("{} ({})", classKind.second, classKind.first), file,
+           fmt::format("with points ps 0.6 lc rgb '{}'", classColour(classKind.first))});
+    }
+    addChart(batch, written, outDir, stem,
+             mapAxes + fmt::format("set title '{} on {}: where it breaks'\n"
+                                   "set key outside right title 'kind (class)'\n",
+                                   quotable(key.first), quotable(key.second)),
+             withCriticalAngle(plotted));
+  }
+}
+
 }  // namespace
 
 std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
@@ -167,6 +214,7 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
                                  "(error bound {}, physical range)'\n",
                                  kMethodErrorBound),
            withCriticalAngle(data.curves("map/method/", "with points ps 0.5")));
+  if (result.listingsSwept) addListingMaps(batch, written, outDir, result.listings, mapAxes);
   batch.run();
   return written;
 }

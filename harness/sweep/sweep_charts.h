@@ -1,7 +1,8 @@
 #pragma once
 // A sweep's charts, drawn by one gnuplot run: error against angle per
 // backend (refract, reflect) and per Fresnel method, and maps over
-// angle x eta of where each breaks and why. SVG and PNG of each.
+// angle x eta of where each built-in, method and listing (per backend)
+// breaks and why. SVG and PNG of each.
 #include <filesystem>
 #include <vector>
 

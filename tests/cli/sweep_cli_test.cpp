@@ -106,6 +106,26 @@ TEST(SweepCli, ListingsAreDrawnAtTheSweepPoints) {
   fs::remove_all(out);
 }
 
+// One listing on one driver, charts on: its map over angle x eta is drawn
+// beside the others, SVG and PNG, a curve per kind coloured by class.
+TEST(SweepCli, EachListingGetsAMapPerBackend) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-m-{}", ::getpid());
+  const Outcome o =
+      runSnell(fmt::format("sweep --quick --no-builtins --backend gl --listings "
+                           "'cg-tutorial/c7e3v-refraction-glass-to-air' --out {}",
+                           out.string()));
+  ASSERT_TRUE(o.code == 0 || o.code == 1) << o.out;
+  const std::string stem = "sweep-map-listing-cg-tutorial-c7e3v-refraction-glass-to-air-gl";
+  ASSERT_TRUE(fs::exists(out / (stem + ".png"))) << o.out;
+  EXPECT_GT(fs::file_size(out / (stem + ".png")), 1000u);
+  const std::string svg = readText(out / (stem + ".svg"));
+  EXPECT_NE(svg.find("zero_where_physics_refracts, stretched (method)"), std::string::npos)
+      << "the stretched model's total internal reflection, the method's";
+  EXPECT_NE(svg.find("rgb(255, 127,  14)"), std::string::npos) << "method in orange";
+  EXPECT_NE(o.out.find("chart: " + (out / (stem + ".svg")).string()), std::string::npos);
+  fs::remove_all(out);
+}
+
 TEST(SweepCli, DeviceReachesTheDrivers) {
   const Outcome o =
       runSnell("sweep --quick --no-charts --backend vk --device 99 --out /tmp/snell-sweep-device");
