@@ -143,7 +143,7 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
     }
     addChart(batch, written, outDir, stem,
              mapAxes + fmt::format("set title '{} on {}: where it breaks'\n"
-                                   "set key outside right title 'kind (class)'\n",
+                                   "set key outside right top Left reverse font ',8' title 'kind (class)'\n",
                                    quotable(key.first), quotable(key.second)),
              withCriticalAngle(plotted));
   }
