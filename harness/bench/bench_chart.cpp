@@ -98,12 +98,22 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
   }
   std::string labels;
   const std::vector<LabelOffset> offsets = placeLabels(labelled, kLabelScale);
-  for (std::size_t i = 0; i < labelled.size(); ++i)
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
     labels += fmt::format(
         "set label {} '{}' at first {}, first {} offset character {:.2f},{:.2f} left font ',8' "
         "tc lt {} front\n",
         i + 1, labelled[i].text, labelAt[i].first, labelAt[i].second, offsets[i].dx, offsets[i].dy,
         labelColours[i]);
+    // A label moved off its nearest place gets a faint leader to its point.
+    if (std::abs(offsets[i].dy) > 1.0 || offsets[i].dx < 0) {
+      const LabelBox box = labelBox(labelled[i], offsets[i], kLabelScale);
+      const double end = offsets[i].dx < 0 ? box.right - labelled[i].x : offsets[i].dx;
+      labels += fmt::format(
+          "set arrow {} from first {}, first {} rto character {:.2f},{:.2f} nohead lc {} lw 0.6 "
+          "dt 3 back\n",
+          i + 1, labelAt[i].first, labelAt[i].second, end, offsets[i].dy, labelColours[i]);
+    }
+  }
   return fmt::format(
       "set terminal {}\nset output '{}'\n"
       "set title '{} methods on the {} scene: error against the physics reference vs time "
