@@ -1,7 +1,8 @@
 #pragma once
 // The speed/accuracy chart of a bench run, drawn by gnuplot: error against
 // time per frame, one colour per backend, each method a labelled point and
-// each backend's Pareto front a line through its points.
+// each backend's Pareto front a line through its points. Labels are placed
+// apart so that methods at nearly the same place stay readable.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +16,12 @@ namespace snell::bench {
 std::vector<std::filesystem::path> drawParetoChart(const BenchResults& results,
                                                    const std::string& metric,
                                                    const std::filesystem::path& dir);
+
+// A point's place on the Pareto chart in character cells from the plot
+// area's lower left, for label placement (bench/label_placement.h): time
+// on a linear axis, error on a logarithmic one, between the axis ranges.
+double labelColumn(double x, double low, double high);
+double labelLine(double y, double low, double high);
 
 // The axis label of an error metric ("mean CIEDE2000").
 const char* errorMetricLabel(const std::string& metric);

@@ -22,6 +22,18 @@ json errorJson(const ImageError& e) {
           {"compared_pixels", e.compared}};
 }
 
+json timingJson(const FrameTiming& t) {
+  return {{"width", t.width},        {"height", t.height}, {"repeats", t.repeats},
+          {"median_ms", t.medianMs}, {"min_ms", t.minMs},  {"max_ms", t.maxMs},
+          {"p10_ms", t.p10Ms},       {"p90_ms", t.p90Ms}};
+}
+
+FrameTiming timingFromJson(const json& t) {
+  return {t.at("width").get<int>(),        t.at("height").get<int>(), t.value("repeats", 0),
+          t.at("median_ms").get<double>(), t.value("min_ms", 0.0),    t.value("max_ms", 0.0),
+          t.value("p10_ms", 0.0),          t.value("p90_ms", 0.0)};
+}
+
 json toJson(const BenchRecord& r) {
   json byAngle = json::array();
   for (const AngleBin& bin : r.errorByAngle) {
@@ -31,15 +43,16 @@ json toJson(const BenchRecord& r) {
     byAngle.push_back(entry);
   }
   json timings = json::array();
-  for (const FrameTiming& t : r.timings)
-    timings.push_back({{"width", t.width},
-                       {"height", t.height},
-                       {"repeats", t.repeats},
-                       {"median_ms", t.medianMs},
-                       {"min_ms", t.minMs},
-                       {"max_ms", t.maxMs},
-                       {"p10_ms", t.p10Ms},
-                       {"p90_ms", t.p90Ms}});
+  for (const FrameTiming& t : r.timings) timings.push_back(timingJson(t));
+  json byTessellation = json::array();
+  for (const TessellationTiming& t : r.byTessellation) {
+    json entry = timingJson(t.timing);
+    entry["stacks"] = t.stacks;
+    entry["slices"] = t.slices;
+    entry["vertices"] = t.vertices;
+    entry["triangles"] = t.triangles;
+    byTessellation.push_back(entry);
+  }
   return {{"method", r.method},
           {"title", r.title},
           {"backend", r.backend},
@@ -47,6 +60,7 @@ json toJson(const BenchRecord& r) {
           {"parameters", r.parameters},
           {"ms_per_frame", r.msPerFrame()},
           {"timings", timings},
+          {"timings_by_tessellation", byTessellation},
           {"error",
            {{"width", r.errorWidth},
             {"rms", r.error.rms},
@@ -66,10 +80,11 @@ BenchRecord fromJson(const json& j) {
   r.renderer = j.value("renderer", "");
   if (j.contains("parameters"))
     r.parameters = j.at("parameters").get<std::map<std::string, double>>();
-  for (const json& t : j.at("timings"))
-    r.timings.push_back({t.at("width").get<int>(), t.at("height").get<int>(), t.value("repeats", 0),
-                         t.at("median_ms").get<double>(), t.value("min_ms", 0.0),
-                         t.value("max_ms", 0.0), t.value("p10_ms", 0.0), t.value("p90_ms", 0.0)});
+  for (const json& t : j.at("timings")) r.timings.push_back(timingFromJson(t));
+  for (const json& t : j.value("timings_by_tessellation", json::array()))
+    r.byTessellation.push_back({t.at("stacks").get<int>(), t.at("slices").get<int>(),
+                                t.at("vertices").get<std::size_t>(),
+                                t.value("triangles", std::size_t{0}), timingFromJson(t)});
   if (r.timings.empty()) throw std::invalid_argument("a record has no timings");
   const json& e = j.at("error");
   r.errorWidth = e.value("width", 0);

@@ -24,6 +24,16 @@ struct FrameTiming {
   double p90Ms = 0;
 };
 
+// Time per frame with the sphere tessellated into `stacks` x `slices`, at
+// the largest resolution: how the cost grows with the vertex count.
+struct TessellationTiming {
+  int stacks = 0;
+  int slices = 0;
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  FrameTiming timing;
+};
+
 struct BenchRecord {
   std::string method;  // the manifest id
   std::string title;
@@ -34,6 +44,9 @@ struct BenchRecord {
   ImageError error;                          // at the largest resolution
   int errorWidth = 0;
   std::vector<AngleBin> errorByAngle;  // the same error, by angle of incidence
+  // One per tessellation asked, fewest vertices first; the error is
+  // measured at the scene's own tessellation only.
+  std::vector<TessellationTiming> byTessellation;
   // The largest resolution's median: the cost the chart and advisor use.
   double msPerFrame() const { return timings.empty() ? 0.0 : timings.back().medianMs; }
 };

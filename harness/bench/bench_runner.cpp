@@ -13,6 +13,7 @@
 #include "core/errors.h"
 #include "core/manifest.h"
 #include "core/scene.h"
+#include "core/scene_file.h"
 #include "runner/image_check.h"
 
 namespace snell::bench {
@@ -49,7 +50,48 @@ FrameTiming timeFrames(Backend& backend, const RenderJob& job, const Manifest& m
   return t;
 }
 
+// A sphere at each tessellation asked (fewest vertices first), drawn at
+// `size` pixels square; none for a scene that is not a sphere and was asked
+// for none.
+struct TessellatedScene {
+  int stacks = 0, slices = 0;
+  bool own = false;  // the scene file's own: timed already, at the largest resolution
+  Scene scene;
+};
+
+std::vector<TessellatedScene> tessellatedScenes(const BenchOptions& options, int size) {
+  SceneFile file = loadSceneFile(builtInScenesDir() / (options.scene + ".toml"));
+  if (file.shape != "sphere") {
+    if (!options.tessellations.empty())
+      throw UsageError(fmt::format(
+          "--tessellations: scene `{}` is a {}, not a sphere; drop --tessellations or use "
+          "--scene sphere",
+          options.scene, file.shape));
+    return {};
+  }
+  std::vector<int> stacks = options.tessellations;
+  if (stacks.empty()) stacks = {std::max(2, file.stacks / 4), file.stacks, file.stacks * 4};
+  std::sort(stacks.begin(), stacks.end());
+  stacks.erase(std::unique(stacks.begin(), stacks.end()), stacks.end());
+  std::vector<TessellatedScene> scenes;
+  for (int n : stacks) {
+    SceneFile changed = file;
+    changed.stacks = n;
+    // The scene's own ratio of slices to stacks (2 on scenes/sphere.toml).
+    changed.slices = std::max(3, n * file.slices / file.stacks);
+    changed.width = size;
+    changed.height = size;
+    scenes.push_back({changed.stacks, changed.slices,
+                      changed.stacks == file.stacks && changed.slices == file.slices,
+                      buildScene(changed)});
+  }
+  return scenes;
+}
+
 void checkOptions(const BenchOptions& options) {
+  for (int n : options.tessellations)
+    if (n < 2 || n > 1024)
+      throw UsageError(fmt::format("--tessellations: {} stacks is outside 2 to 1024", n));
   if (options.resolutions.empty()) throw UsageError("--resolutions: give at least one size");
   for (int r : options.resolutions)
     if (r < 8 || r > 4096)
@@ -76,6 +118,7 @@ BenchResults runBench(const BenchOptions& options,
 
   BenchResults results;
   results.scene = options.scene;
+  const std::vector<TessellatedScene> tessellations = tessellatedScenes(options, errorSize);
   const LadderReference references(methods, baseScene, errorSize, options.referenceWavelengths);
   results.reference = references.model();
 
@@ -96,6 +139,19 @@ BenchResults runBench(const BenchOptions& options,
         const RenderJob job = sceneRenderJob(m, scene, resolveBindings(m, scene));
         record.timings.push_back(timeFrames(*backend, job, m, options));
         if (size == errorSize) lastImage = renderOrThrow(*backend, job, m);
+      }
+      for (const TessellatedScene& tessellated : tessellations) {
+        const Scene& scene = tessellated.scene;
+        TessellationTiming t;
+        t.stacks = tessellated.stacks;
+        t.slices = tessellated.slices;
+        t.vertices = scene.vertexCount;
+        t.triangles = scene.indices.size() / 3;
+        t.timing = tessellated.own
+                       ? record.timings.back()
+                       : timeFrames(*backend, sceneRenderJob(m, scene, resolveBindings(m, scene)),
+                                    m, options);
+        record.byTessellation.push_back(t);
       }
       const ReferenceImage& reference = references.imageFor(m);
       record.error = imageError(lastImage, reference.color, reference.covered);

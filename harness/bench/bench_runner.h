@@ -20,8 +20,12 @@ struct BenchOptions {
   std::string scene = "sphere";
   std::vector<std::string> backends{"gl", "vk"};
   std::vector<int> resolutions{128, 256, 512};  // square images
-  int warmup = 3;                               // untimed frames after the first draw
-  int repeats = 15;                             // timed frames per resolution
+  // Sphere tessellations to time at the largest resolution, as stacks (the
+  // slices are twice as many, as in scenes/sphere.toml); empty: the scene's
+  // own, a quarter of it and four times it. Only the sphere has them.
+  std::vector<int> tessellations;
+  int warmup = 3;    // untimed frames after the first draw
+  int repeats = 15;  // timed frames per resolution
   // Wavelengths of a dispersion ladder's spectral reference.
   int referenceWavelengths = kReferenceWavelengths;
   // The pixels each backend drew at the largest resolution go here (EXR),

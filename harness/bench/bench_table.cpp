@@ -9,6 +9,31 @@
 
 namespace snell::bench {
 
+std::string tessellationTable(const BenchResults& results) {
+  if (results.records.empty() || results.records.front().byTessellation.empty()) return "";
+  const BenchRecord& first = results.records.front();
+  std::string out = fmt::format(
+      "\nms per frame at {}px by sphere tessellation (stacks x slices, "
+      "vertices)\n",
+      first.byTessellation.front().timing.width);
+  std::set<std::string> backends;
+  for (const BenchRecord& r : results.records) backends.insert(r.backend);
+  for (const std::string& backend : backends) {
+    out += fmt::format("\n{}\n  method                 ", backend);
+    for (const TessellationTiming& t : first.byTessellation)
+      out += fmt::format(" {:>20}", fmt::format("{}x{} ({})", t.stacks, t.slices, t.vertices));
+    out += "\n";
+    for (const BenchRecord& r : results.records) {
+      if (r.backend != backend) continue;
+      out += fmt::format("  {:22}", shortMethodName(r.method));
+      for (const TessellationTiming& t : r.byTessellation)
+        out += fmt::format(" {:>20.3f}", t.timing.medianMs);
+      out += "\n";
+    }
+  }
+  return out;
+}
+
 std::string benchTable(const BenchResults& results, const std::string& metric) {
   std::string out = fmt::format("scene {}; reference: {}\n", results.scene, results.reference);
   std::set<std::string> backends;
@@ -37,6 +62,7 @@ std::string benchTable(const BenchResults& results, const std::string& metric) {
                          last.p90Ms, r.error.rms, r.error.max, r.error.deMean, r.error.deP95);
     }
   }
+  out += tessellationTable(results);
   out += fmt::format(
       "\n* on the Pareto front of ms per frame (largest resolution) against {}: no other method "
       "is both as fast and as accurate. Errors at {}px over the pixels both images cover.\n",

@@ -11,6 +11,7 @@
 #include "bench/bench_runner.h"
 #include "bench/bench_table.h"
 #include "bench/ladder_checks.h"
+#include "bench/vertex_chart.h"
 #include "bench/wavelength_chart.h"
 #include "cli/commands.h"
 #include "core/errors.h"
@@ -43,6 +44,10 @@ std::string benchLadder(bench::BenchOptions run, const std::filesystem::path& ou
   bench::drawAngleChart(results, metric, out);
   std::string charts =
       fmt::format("{0}/pareto.svg, {0}/pareto.png, {0}/angle.svg, {0}/angle.png", out.string());
+  if (bench::hasTessellations(results)) {
+    bench::drawVertexChart(results, out);
+    charts += fmt::format(", {0}/vertices.svg, {0}/vertices.png", out.string());
+  }
   if (bench::hasWavelengthCounts(results)) {
     const double noise = bench::errorNoise(metric);
     const auto violations = bench::wavelengthOrderViolations(results, metric, noise);
@@ -85,13 +90,20 @@ Command addBenchCommand(CLI::App& app) {
       ->add_option("--resolutions", options->run.resolutions,
                    "Square image sizes in pixels; the error is measured at the last")
       ->delimiter(',');
+  bench
+      ->add_option("--tessellations", options->run.tessellations,
+                   "Sphere tessellations to time at the largest resolution, as stacks (slices "
+                   "in the scene's ratio, 2 per stack on `sphere`): how the time grows with the "
+                   "vertex count (default: the scene's own, a quarter and four times it; the "
+                   "error is measured at the scene's own)")
+      ->delimiter(',');
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution");
   bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw");
   bench->add_option("--reference-wavelengths", options->run.referenceWavelengths,
                     "Wavelengths of a dispersion ladder's spectral reference");
   bench->add_option("--out", options->out,
                     "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
-                    "wavelengths.svg/png, images/; ablation.json");
+                    "vertices.svg/png, wavelengths.svg/png, images/; ablation.json");
   bench->add_option("--metric", options->metric,
                     "Error on the chart's axis and for the table's front: rms, max, de_mean, "
                     "de_p95");

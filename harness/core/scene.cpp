@@ -237,4 +237,6 @@ Scene makeScene(const std::string& name, const std::vector<fs::path>& searchPath
 
 Scene makeScene(const std::string& name) { return makeScene(name, {builtInScenesDir()}); }
 
+Scene buildScene(const SceneFile& file) { return build(file); }
+
 }  // namespace snell

@@ -49,4 +49,9 @@ Scene makeScene(const std::string& name, const std::vector<std::filesystem::path
 // The repository's own scenes.
 Scene makeScene(const std::string& name);
 
+// A scene built from its file as read (or changed in memory: `snell bench`
+// draws the sphere at other tessellations this way).
+struct SceneFile;
+Scene buildScene(const SceneFile& file);
+
 }  // namespace snell

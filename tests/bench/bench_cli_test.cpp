@@ -24,7 +24,8 @@ class BenchCli : public ::testing::Test {
     dir_ = fs::temp_directory_path() / fmt::format("snell_bench_cli_test.{}", getpid());
     fs::remove_all(dir_);
     run_ = new Outcome(runSnell(
-        fmt::format("bench --resolutions 24,48 --repeats 2 --warmup 0 --out {}", dir_.string())));
+        fmt::format("bench --resolutions 24,48 --tessellations 8,4 --repeats 2 --warmup 0 --out {}",
+                    dir_.string())));
   }
   static void TearDownTestSuite() {
     delete run_;
@@ -51,6 +52,17 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
       EXPECT_LE(t["median_ms"].get<double>(), t["max_ms"].get<double>());
     }
     EXPECT_EQ(r["error"]["width"], 48);
+    // The tessellations asked, fewest vertices first, timed at the largest
+    // resolution: 4 x 8 is (4 + 1) x (8 + 1) vertices, 8 x 16 is 9 x 17.
+    ASSERT_EQ(r["timings_by_tessellation"].size(), 2u) << r["method"];
+    const auto& coarse = r["timings_by_tessellation"][0];
+    const auto& fine = r["timings_by_tessellation"][1];
+    EXPECT_EQ(coarse["stacks"], 4);
+    EXPECT_EQ(coarse["slices"], 8);
+    EXPECT_EQ(coarse["vertices"], 45);
+    EXPECT_EQ(fine["vertices"], 153);
+    EXPECT_EQ(fine["width"], 48);
+    EXPECT_GT(fine["median_ms"].get<double>(), 0.0);
     EXPECT_GT(r["error"]["compared_pixels"].get<int>(), 48 * 48 / 10);
     EXPECT_LE(r["error"]["rms"].get<double>(), r["error"]["max"].get<double>());
     EXPECT_LE(r["error"]["de_mean"].get<double>(), r["error"]["de_p95"].get<double>() + 1e-9)
@@ -66,6 +78,9 @@ TEST_F(BenchCli, WritesARecordForEveryMethodOnEveryBackendAndTheCharts) {
   EXPECT_EQ(seen.size(), 12u);
   EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.svg"), 1000u);
   EXPECT_GT(fs::file_size(dir_ / "fresnel" / "pareto.png"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "vertices.svg"), 1000u);
+  EXPECT_GT(fs::file_size(dir_ / "fresnel" / "vertices.png"), 1000u);
+  EXPECT_NE(run_->out.find("by sphere tessellation"), std::string::npos) << run_->out;
   // With no --methods every ladder runs, each into a folder of its own, and
   // the ablation table is written beside them.
   for (const char* ladder : {"dispersion", "refraction"})
@@ -174,6 +189,12 @@ TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
   o = runSnell("bench --scene torus --resolutions 16 --repeats 1 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("analytic sphere"), std::string::npos) << o.out;
+  o = runSnell("bench --tessellations 1 --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--tessellations: 1 stacks"), std::string::npos) << o.out;
+  o = runSnell("bench --scene torus --tessellations 8 --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("not a sphere"), std::string::npos) << o.out;
   o = runSnell("bench --metric psnr --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("unknown error metric"), std::string::npos) << o.out;
