@@ -21,16 +21,17 @@
 namespace snell {
 namespace {
 
-std::string fresnelSource() {
-  std::ifstream file(std::string(SNELL_SOURCE_ROOT) +
-                     "/shaders/orange-book/14.1-fresnel/fresnel.vert");
+// A stage file of Listing 14.1, as published.
+std::string fresnelStage(const char* file) {
+  std::ifstream in(std::string(SNELL_SOURCE_ROOT) + "/shaders/orange-book/14.1-fresnel/" + file);
   std::ostringstream text;
-  text << file.rdbuf();
+  text << in.rdbuf();
   return text.str();
 }
 
 struct Fresnel14_1 : FresnelInputs {
-  derived::ShaderSource source{"fresnel.vert", fresnelSource(), derived::Stage::Vertex};
+  derived::ShaderSource source{"fresnel.vert", fresnelStage("fresnel.vert"),
+                               derived::Stage::Vertex};
   OracleInput input(PrecisionRules rules) const {
     return {uniforms, constants, attributes, scene.vertexCount, rules};
   }
@@ -63,19 +64,11 @@ void lowerFresnel14_1(benchmark::State& state) {
 }
 BENCHMARK(lowerFresnel14_1)->Unit(benchmark::kMicrosecond);
 
-std::string fresnelFragmentSource() {
-  std::ifstream file(std::string(SNELL_SOURCE_ROOT) +
-                     "/shaders/orange-book/14.1-fresnel/fresnel.frag");
-  std::ostringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
 void derivedReferenceImageOfSphere(benchmark::State& state) {
   const Fresnel14_1 in;
   const auto vertex = derived::makeDerivedDrawingVertexOracle(in.source);
   const auto fragment = derived::makeDerivedFragmentOracle(
-      {"fresnel.frag", fresnelFragmentSource(), derived::Stage::Fragment});
+      {"fresnel.frag", fresnelStage("fresnel.frag"), derived::Stage::Fragment});
   for (auto _ : state) {
     benchmark::DoNotOptimize(
         renderReferenceImage(in.referenceInput("derived", vertex.get(), fragment.get())));

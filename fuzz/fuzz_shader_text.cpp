@@ -39,8 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const snell::ValueType kTypes[] = {snell::ValueType::Float, snell::ValueType::Vec2,
                                             snell::ValueType::Vec3};
   const snell::FragmentProbe probe{"x", kTypes[(control >> 1) % 3], 1 + (control >> 3)};
-  const snell::ProbeOutputStyle style = control & 4 ? snell::ProbeOutputStyle::FragData
-                                                    : snell::ProbeOutputStyle::Outputs;
+  const snell::ProbeOutputStyle style =
+      control & 4 ? snell::ProbeOutputStyle::FragData : snell::ProbeOutputStyle::Outputs;
   try {
     const std::string probed = snell::insertFragmentProbes(source, "fuzz.frag", {probe}, style);
     // Writes are appended to existing lines: the line count never changes.

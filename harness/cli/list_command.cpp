@@ -43,8 +43,8 @@ Command addListCommand(CLI::App& app) {
                  fmt::format("{}", fmt::join(backends, ",")),
                  statusName(m.expect == Expectation::CompileError ? Status::ExpectedCompileError
                                                                   : Status::Pass),
-                 stage, fmt::format("{}", fmt::join(c.spec.checks, ",")), oracleLabel(m), m.source.file,
-                 m.source.where);
+                 stage, fmt::format("{}", fmt::join(c.spec.checks, ",")), oracleLabel(m),
+                 m.source.file, m.source.where);
     }
     std::set<const Manifest*> listings;
     for (const Case& c : cases) listings.insert(c.manifest);

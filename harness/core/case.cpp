@@ -16,7 +16,8 @@ std::vector<Case> expandCases(const std::vector<Manifest>& manifests, const std:
   for (const Manifest& manifest : manifests)
     for (const CaseSpec& spec : manifest.cases) {
       Case c{manifest.id + "/" + spec.scene, &manifest, spec};
-      if (glob.empty() || fnmatch(glob.c_str(), c.id.c_str(), 0) == 0) cases.push_back(std::move(c));
+      if (glob.empty() || fnmatch(glob.c_str(), c.id.c_str(), 0) == 0)
+        cases.push_back(std::move(c));
     }
   return cases;
 }
@@ -29,10 +30,11 @@ namespace {
   for (const auto& [name, value] : scene.values) known.push_back("scene." + name);
   for (const auto& [name, value] : scene.attributes) known.push_back("scene." + name);
   for (const std::string& name : scene.samplers) known.push_back("scene." + name);
-  throw UsageError(fmt::format("{}:{}: `{}` is bound to scene.{}, which scene `{}` does not "
-                               "provide; it provides {}",
-                               manifest.path.string(), binding.line, binding.name, semantic,
-                               scene.name, fmt::format("{}", fmt::join(known, ", "))));
+  throw UsageError(
+      fmt::format("{}:{}: `{}` is bound to scene.{}, which scene `{}` does not "
+                  "provide; it provides {}",
+                  manifest.path.string(), binding.line, binding.name, semantic, scene.name,
+                  fmt::format("{}", fmt::join(known, ", "))));
 }
 
 // GL's initial value of a uniform the manifest binds to "default": zero, of
@@ -114,7 +116,8 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
     const std::string& semantic = std::get<std::string>(binding.source);
     if (auto it = scene.values.find(semantic); it != scene.values.end())
       out.uniforms[binding.name] = it->second;
-    else if (std::find(scene.samplers.begin(), scene.samplers.end(), semantic) == scene.samplers.end())
+    else if (std::find(scene.samplers.begin(), scene.samplers.end(), semantic) ==
+             scene.samplers.end())
       unknownSemantic(manifest, binding, scene, semantic);
     // Samplers are bound by the pixel path; the vertex stage does not read them.
   }
@@ -125,9 +128,10 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
       continue;
     }
     if (std::holds_alternative<Value>(binding.source))
-      throw UsageError(fmt::format("{}:{}: input `{}` must name a per-vertex scene semantic "
-                                   "(scene.position, scene.normal), not a literal",
-                                   manifest.path.string(), binding.line, binding.name));
+      throw UsageError(
+          fmt::format("{}:{}: input `{}` must name a per-vertex scene semantic "
+                      "(scene.position, scene.normal), not a literal",
+                      manifest.path.string(), binding.line, binding.name));
     const std::string& semantic = std::get<std::string>(binding.source);
     auto it = scene.attributes.find(semantic);
     if (it == scene.attributes.end()) unknownSemantic(manifest, binding, scene, semantic);

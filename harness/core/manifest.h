@@ -20,9 +20,9 @@ struct SourceCitation {
 // A uniform or input bound either to a scene semantic ("scene.modelview")
 // or to a literal value written in the manifest.
 struct Binding {
-  std::string name;                          // the GLSL name
-  std::variant<std::string, Value> source;   // semantic (without "scene.") or literal
-  int line = 0;                              // where it is written, for messages
+  std::string name;                         // the GLSL name
+  std::variant<std::string, Value> source;  // semantic (without "scene.") or literal
+  int line = 0;                             // where it is written, for messages
   // `"default"`: the author wants the API's initial value (0, or (0,0,0,1)
   // for an input) and says so; snell sets nothing.
   bool apiDefault = false;
@@ -75,7 +75,7 @@ struct Manifest {
   std::string title;
   SourceCitation source;
   Profile profile = Profile::Core;
-  std::string vertexFile;      // relative to the manifest's folder
+  std::string vertexFile;  // relative to the manifest's folder
   std::string fragmentFile;
   // `oracle`: the hand-written oracle that mirrors the listing line by line
   // (its intent: an edited shader fails against it), "derived" for the one

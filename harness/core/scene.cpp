@@ -26,9 +26,9 @@ double radians(double degrees) { return degrees * kPi / 180; }
 void addCameraValues(Scene& scene, const SceneFile& file) {
   Mat4d scale = identity4();
   for (int c = 0; c < 3; ++c) scale[c * 4 + c] = file.modelScale[c];
-  const Mat4d model = multiply(
-      rotation({file.modelAxis[0], file.modelAxis[1], file.modelAxis[2]}, radians(file.modelDegrees)),
-      scale);
+  const Mat4d model = multiply(rotation({file.modelAxis[0], file.modelAxis[1], file.modelAxis[2]},
+                                        radians(file.modelDegrees)),
+                               scale);
   const Vec3d eye = {file.eye[0], file.eye[1], file.eye[2]};
   const Mat4d view = lookAt(eye, {file.center[0], file.center[1], file.center[2]},
                             {file.up[0], file.up[1], file.up[2]});
@@ -40,9 +40,9 @@ void addCameraValues(Scene& scene, const SceneFile& file) {
   // differ only by the shader's own rounding.
   scene.values["model"] = toMat4Value(model);
   scene.values["view"] = toMat4Value(view);
-  scene.values["eye_position"] = Value{ValueType::Vec3, {static_cast<float>(eye[0]),
-                                                         static_cast<float>(eye[1]),
-                                                         static_cast<float>(eye[2])}};
+  scene.values["eye_position"] =
+      Value{ValueType::Vec3,
+            {static_cast<float>(eye[0]), static_cast<float>(eye[1]), static_cast<float>(eye[2])}};
   scene.values["modelview"] = toMat4Value(modelview);
   scene.values["projection"] = toMat4Value(projection);
   scene.values["view_projection"] = toMat4Value(multiply(projection, view));
@@ -51,11 +51,11 @@ void addCameraValues(Scene& scene, const SceneFile& file) {
   // world space (LearnOpenGL's mat3(transpose(inverse(model)))).
   scene.values["normal_matrix"] = normalMatrixValue(modelview);
   scene.values["model_normal_matrix"] = normalMatrixValue(model);
-  const Mat4d environment = multiply(
-      translation({file.environmentTranslation[0], file.environmentTranslation[1],
-                   file.environmentTranslation[2]}),
-      rotation({file.environmentAxis[0], file.environmentAxis[1], file.environmentAxis[2]},
-               radians(file.environmentDegrees)));
+  const Mat4d environment =
+      multiply(translation({file.environmentTranslation[0], file.environmentTranslation[1],
+                            file.environmentTranslation[2]}),
+               rotation({file.environmentAxis[0], file.environmentAxis[1], file.environmentAxis[2]},
+                        radians(file.environmentDegrees)));
   scene.values["texture_matrix"] = toMat4Value(environment);
   scene.samplers = {"environment", "decal"};
 }
@@ -91,9 +91,9 @@ void gridTriangles(Scene& scene, int rows, int columns, bool skipFirstRow, bool 
         scene.indices.insert(scene.indices.end(), {vertex(row, column), vertex(row, column + 1),
                                                    vertex(row + 1, column)});
       if (!(skipLastRow && row + 1 == rows))
-        scene.indices.insert(scene.indices.end(), {vertex(row, column + 1),
-                                                   vertex(row + 1, column + 1),
-                                                   vertex(row + 1, column)});
+        scene.indices.insert(
+            scene.indices.end(),
+            {vertex(row, column + 1), vertex(row + 1, column + 1), vertex(row + 1, column)});
     }
 }
 
@@ -104,7 +104,8 @@ void sphere(Scene& scene, const SceneFile& file) {
     const double theta = kPi * stack / file.stacks;
     for (int slice = 0; slice <= file.slices; ++slice) {
       const double phi = 2 * kPi * slice / file.slices;
-      const Vec3d n = {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+      const Vec3d n = {std::sin(theta) * std::cos(phi), std::cos(theta),
+                       std::sin(theta) * std::sin(phi)};
       addVertex(position, normal, n, n);
       // d/dphi, normalised: along the parallel, defined at the poles too.
       addTangent(tangent, {-std::sin(phi), 0.0, std::cos(phi)});
@@ -154,9 +155,12 @@ void sweep(Scene& scene, const SceneFile& file) {
   for (int k = 0; k < count; ++k) {
     const double t = count > 1 ? static_cast<double>(k) / (count - 1) : 0.0;
     double angle;  // incidence angle in degrees
-    if (k < count / 2) angle = 90.0 * (2 * t);                                         // 0..90
-    else if (k < 3 * count / 4) angle = 90.0 * (1 - std::pow(10.0, -1 - 6 * (4 * t - 2)));  // to grazing
-    else angle = 90.0 + 10.0 * std::pow(10.0, -5 * (4 * t - 3));                        // just past
+    if (k < count / 2)
+      angle = 90.0 * (2 * t);  // 0..90
+    else if (k < 3 * count / 4)
+      angle = 90.0 * (1 - std::pow(10.0, -1 - 6 * (4 * t - 2)));  // to grazing
+    else
+      angle = 90.0 + 10.0 * std::pow(10.0, -5 * (4 * t - 3));  // just past
     // View direction within 30 degrees of -z, at a distance of 2 to 6.
     const double polar = radians(30.0) * std::sqrt(uniform()), azimuth = 2 * kPi * uniform();
     const Vec3d d = {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
@@ -197,10 +201,14 @@ Scene build(const SceneFile& file) {
   Scene scene;
   scene.name = file.name;
   scene.description = file.description;
-  if (file.shape == "sphere") sphere(scene, file);
-  else if (file.shape == "torus") torus(scene, file);
-  else if (file.shape == "fullscreen") fullscreen(scene);
-  else sweep(scene, file);
+  if (file.shape == "sphere")
+    sphere(scene, file);
+  else if (file.shape == "torus")
+    torus(scene, file);
+  else if (file.shape == "fullscreen")
+    fullscreen(scene);
+  else
+    sweep(scene, file);
   scene.vertexCount = scene.attributes.at("position").vertexCount();
   addCameraValues(scene, file);
   if (!scene.indices.empty()) {
@@ -209,8 +217,8 @@ Scene build(const SceneFile& file) {
     scene.environment = std::make_shared<const CubeMap>(makeEnvironment(file.environmentSize));
     scene.decal = std::make_shared<const Image>(makeDecal());
     // Shadertoy's iResolution: the viewport in pixels, and a pixel aspect of 1.
-    scene.values["resolution"] = Value{ValueType::Vec3, {static_cast<float>(file.width),
-                                                         static_cast<float>(file.height), 1.0f}};
+    scene.values["resolution"] = Value{
+        ValueType::Vec3, {static_cast<float>(file.width), static_cast<float>(file.height), 1.0f}};
   }
   return scene;
 }

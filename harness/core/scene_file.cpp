@@ -1,7 +1,6 @@
 #include "core/scene_file.h"
 
 #include <fmt/format.h>
-
 #include <toml++/toml.h>
 
 #include "core/errors.h"
@@ -37,17 +36,20 @@ class SceneReader {
       if (required) fail(&t, fmt::format("missing `{}`", key));
       return fallback;
     }
-    if (!node->is_floating_point() && !node->is_integer()) fail(node, fmt::format("`{}` must be a number", key));
+    if (!node->is_floating_point() && !node->is_integer())
+      fail(node, fmt::format("`{}` must be a number", key));
     return *node->value<double>();
   }
 
   int positive(const toml::table& t, std::string_view key) const {
     const double x = number(t, key, 0, true);
-    if (x < 1 || x != static_cast<int>(x)) fail(t.get(key), fmt::format("`{}` must be a whole number >= 1", key));
+    if (x < 1 || x != static_cast<int>(x))
+      fail(t.get(key), fmt::format("`{}` must be a whole number >= 1", key));
     return static_cast<int>(x);
   }
 
-  std::array<double, 3> vec3(const toml::table& t, std::string_view key, std::array<double, 3> fallback) const {
+  std::array<double, 3> vec3(const toml::table& t, std::string_view key,
+                             std::array<double, 3> fallback) const {
     const toml::node* node = t.get(key);
     if (!node) return fallback;
     const toml::array* a = node->as_array();
@@ -55,7 +57,8 @@ class SceneReader {
     std::array<double, 3> out{};
     for (std::size_t k = 0; k < 3; ++k) {
       const toml::node& e = *a->get(k);
-      if (!e.is_floating_point() && !e.is_integer()) fail(node, fmt::format("`{}` must hold numbers", key));
+      if (!e.is_floating_point() && !e.is_integer())
+        fail(node, fmt::format("`{}` must hold numbers", key));
       out[k] = *e.value<double>();
     }
     return out;
@@ -80,14 +83,19 @@ class SceneReader {
     }
     const toml::table& geometry = *table(root, "geometry", true);
     const toml::node* shape = geometry.get("shape");
-    if (!shape || !shape->is_string()) fail(&geometry, "`geometry.shape` must be \"sphere\", \"torus\", \"sweep\" or \"fullscreen\"");
+    if (!shape || !shape->is_string())
+      fail(&geometry,
+           "`geometry.shape` must be \"sphere\", \"torus\", \"sweep\" or \"fullscreen\"");
     s.shape = std::string(*shape->value<std::string>());
-    if (s.shape == "sphere") rejectUnknownKeys(geometry, {"shape", "stacks", "slices"}, path_, "[geometry] of a sphere");
+    if (s.shape == "sphere")
+      rejectUnknownKeys(geometry, {"shape", "stacks", "slices"}, path_, "[geometry] of a sphere");
     if (s.shape == "torus")
-      rejectUnknownKeys(geometry, {"shape", "major_radius", "minor_radius", "rings", "sides"}, path_,
-                        "[geometry] of a torus");
-    if (s.shape == "sweep") rejectUnknownKeys(geometry, {"shape", "count", "seed"}, path_, "[geometry] of a sweep");
-    if (s.shape == "fullscreen") rejectUnknownKeys(geometry, {"shape"}, path_, "[geometry] of a full-screen pass");
+      rejectUnknownKeys(geometry, {"shape", "major_radius", "minor_radius", "rings", "sides"},
+                        path_, "[geometry] of a torus");
+    if (s.shape == "sweep")
+      rejectUnknownKeys(geometry, {"shape", "count", "seed"}, path_, "[geometry] of a sweep");
+    if (s.shape == "fullscreen")
+      rejectUnknownKeys(geometry, {"shape"}, path_, "[geometry] of a full-screen pass");
     if (s.shape == "sphere") {
       s.stacks = positive(geometry, "stacks");
       s.slices = positive(geometry, "slices");
@@ -102,7 +110,8 @@ class SceneReader {
       s.count = positive(geometry, "count");
       s.seed = static_cast<long long>(number(geometry, "seed", 1, false));
     } else if (s.shape != "fullscreen") {
-      fail(shape, fmt::format("unknown shape `{}`; use sphere, torus, sweep or fullscreen", s.shape));
+      fail(shape,
+           fmt::format("unknown shape `{}`; use sphere, torus, sweep or fullscreen", s.shape));
     }
     if (const toml::table* model = table(root, "model", false)) {
       rejectUnknownKeys(*model, {"rotation_axis", "rotation_degrees", "scale"}, path_, "[model]");
@@ -111,11 +120,13 @@ class SceneReader {
       s.modelScale = vec3(*model, "scale", s.modelScale);
       for (double factor : s.modelScale)
         if (!(factor > 0))
-          fail(model->get("scale"), "`scale` must hold three numbers > 0 (a mirror or a flat "
-                                    "model turns faces around)");
+          fail(model->get("scale"),
+               "`scale` must hold three numbers > 0 (a mirror or a flat "
+               "model turns faces around)");
     }
     const toml::table& camera = *table(root, "camera", true);
-    rejectUnknownKeys(camera, {"eye", "center", "up", "fovy_degrees", "near", "far"}, path_, "[camera]");
+    rejectUnknownKeys(camera, {"eye", "center", "up", "fovy_degrees", "near", "far"}, path_,
+                      "[camera]");
     s.eye = vec3(camera, "eye", s.eye);
     s.center = vec3(camera, "center", s.center);
     s.up = vec3(camera, "up", s.up);

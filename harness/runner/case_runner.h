@@ -4,17 +4,17 @@
 // not depend on the backend, so it is computed once per case and shared.
 #include <filesystem>
 #include <map>
-#include <tuple>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "backends/backend.h"
 #include "core/case.h"
 #include "oracle/vertex_oracle.h"
-#include "runner/listing_oracles.h"
 #include "runner/case_result.h"
 #include "runner/image_check.h"
+#include "runner/listing_oracles.h"
 
 namespace snell {
 

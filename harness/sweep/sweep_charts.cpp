@@ -141,11 +141,13 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
           {fmt::format("{} ({})", classKind.second, classKind.first), file,
            fmt::format("with points ps 0.6 lc rgb '{}'", classColour(classKind.first))});
     }
-    addChart(batch, written, outDir, stem,
-             mapAxes + fmt::format("set title '{} on {}: where it breaks'\n"
-                                   "set key outside right top Left reverse font ',8' title 'kind (class)'\n",
-                                   quotable(key.first), quotable(key.second)),
-             withCriticalAngle(plotted));
+    addChart(
+        batch, written, outDir, stem,
+        mapAxes +
+            fmt::format("set title '{} on {}: where it breaks'\n"
+                        "set key outside right top Left reverse font ',8' title 'kind (class)'\n",
+                        quotable(key.first), quotable(key.second)),
+        withCriticalAngle(plotted));
   }
 }
 

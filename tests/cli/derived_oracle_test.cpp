@@ -11,6 +11,7 @@ namespace snell {
 namespace {
 
 using edited::editedCopy;
+using edited::replaceInFile;
 namespace fs = std::filesystem;
 
 void setOracleLine(const fs::path& manifest, const std::string& line) {
@@ -21,17 +22,6 @@ void setOracleLine(const fs::path& manifest, const std::string& line) {
       std::regex_replace(text.str(), std::regex("(^|\n)oracle *=[^\n]*"), "$1" + line);
   ASSERT_NE(replaced, text.str()) << manifest;
   std::ofstream(manifest, std::ios::trunc) << replaced;
-}
-
-void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string source = text.str();
-  const std::size_t at = source.find(from);
-  ASSERT_NE(at, std::string::npos) << from << " not in " << file;
-  source.replace(at, from.size(), to);
-  std::ofstream(file, std::ios::trunc) << source;
 }
 
 bool fromDerived(const VaryingCheck& v) { return v.name.ends_with(" (derived)"); }

@@ -23,25 +23,31 @@ namespace snell::edited {
 
 namespace fs = std::filesystem;
 
+// Replaces the first `from` in `file` with `to`; a `from` that is not there
+// fails the test and leaves the file as it was.
+inline void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string source = text.str();
+  const std::size_t at = source.find(from);
+  EXPECT_NE(at, std::string::npos) << from << " not in " << file;
+  if (at == std::string::npos) return;
+  source.replace(at, from.size(), to);
+  std::ofstream(file, std::ios::trunc) << source;
+}
+
 // Copies shaders/<listing> to a fresh temporary folder and replaces the
 // first `from` in `file` with `to`; a `from` that is not there fails the test.
 inline fs::path editedCopy(const std::string& listing, const std::string& file,
                            const std::string& from, const std::string& to) {
   static std::atomic<int> copies{0};
-  const fs::path dir = fs::temp_directory_path() /
-                       ("snell-edited-" + std::to_string(::getpid()) + "-" +
-                        std::to_string(copies++));
+  const fs::path dir = fs::temp_directory_path() / ("snell-edited-" + std::to_string(::getpid()) +
+                                                    "-" + std::to_string(copies++));
   fs::remove_all(dir);
   fs::create_directories(dir);
   fs::copy(fs::path(SNELL_SOURCE_ROOT "/shaders") / listing, dir, fs::copy_options::recursive);
-  std::ifstream in(dir / file);
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string source = text.str();
-  const std::size_t at = source.find(from);
-  EXPECT_NE(at, std::string::npos) << from << " not in " << listing << "/" << file;
-  if (at != std::string::npos) source.replace(at, from.size(), to);
-  std::ofstream(dir / file, std::ios::trunc) << source;
+  replaceInFile(dir / file, from, to);
   return dir;
 }
 

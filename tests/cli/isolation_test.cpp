@@ -1,8 +1,8 @@
 // Real faults in real workers: a listing that never finishes on either
 // backend, and a worker killed from outside. Each costs only its own case.
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -81,13 +81,14 @@ std::vector<pid_t> workersOf(pid_t parent) {
 TEST(Isolation, EndlessListingTimesOutOnBothBackendsAndOthersPass) {
   const fs::path shaders = shadersWithFault();
   const fs::path json = shaders / "results.jsonl";
-  const pid_t pid = spawnSnell({"run", "-j", "2", "--reruns", "0", "--shaders", shaders.string(), "--json",
-                                json.string()});
+  const pid_t pid = spawnSnell(
+      {"run", "-j", "2", "--reruns", "0", "--shaders", shaders.string(), "--json", json.string()});
   EXPECT_EQ(exitCode(pid), 1);
   const auto results = resultsByKey(json);
   ASSERT_EQ(results.size(), 2u * (1 + kFresnelCases));
   for (const auto& [key, result] : results)
-    EXPECT_EQ(result["status"], key.find("faults/endless-loop") != std::string::npos ? "Timeout" : "Pass")
+    EXPECT_EQ(result["status"],
+              key.find("faults/endless-loop") != std::string::npos ? "Timeout" : "Pass")
         << key;
   fs::remove_all(shaders);
 }
@@ -103,8 +104,8 @@ TEST_P(IsolationSignal, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
   const fs::path json = shaders / "results.jsonl";
   // One worker, the endless case first: it is the case running when the
   // worker is killed; the Fresnel cases after it need a fresh worker.
-  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120", "--reruns", "0",
-                                "--shaders", shaders.string(), "--json", json.string()});
+  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120", "--reruns",
+                                "0", "--shaders", shaders.string(), "--json", json.string()});
   std::vector<pid_t> workers;
   for (int k = 0; k < 200 && workers.empty(); ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));

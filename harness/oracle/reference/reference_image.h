@@ -18,8 +18,8 @@
 namespace snell {
 
 struct ReferenceImage {
-  Image color;                      // the reference colour, linear float
-  std::vector<PixelMask> mask;      // width * height, row 0 at the top
+  Image color;                  // the reference colour, linear float
+  std::vector<PixelMask> mask;  // width * height, row 0 at the top
   std::size_t count(PixelMask m) const;
 };
 
@@ -32,7 +32,7 @@ struct ReferenceInput {
   const ConstantMap& constants;
   const AttributeMap& attributes;
   std::size_t vertexCount = 0;
-  const std::vector<std::uint32_t>& indices;  // triangle list, counter-clockwise front faces
+  const std::vector<std::uint32_t>& indices;       // triangle list, counter-clockwise front faces
   std::map<std::string, const CubeMap*> cubeMaps;  // samplerCube uniforms by GLSL name
   int width = 256;
   int height = 256;
