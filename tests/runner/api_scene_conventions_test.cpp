@@ -1,18 +1,19 @@
 // A LearnOpenGL-style vertex shader (vec3 aPos, separate model, view and
 // projection) bound through a manifest to the scene's semantics runs as
 // written: aPos gets x, y, z of scene.position, and the world position and
-// clip position it computes match the scene's matrices.
+// clip position it computes match the scene's matrices. On every
+// registered API: the same shader, the same checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 
-#include "backends/vk/vk_backend.h"
+#include "backends/backend.h"
 #include "core/case.h"
 #include "core/manifest.h"
-#include "vk_test_support.h"
 
 namespace snell {
 namespace {
@@ -63,8 +64,10 @@ vertex = ["Raw", "Position", "Clip", "Normal"]
 scene = "sphere"
 )";
 
-TEST(VkSceneConventions, Vec3PositionAndSeparateMatricesRunAsWritten) {
-  const fs::path dir = fs::temp_directory_path() / "snell-vk-scene-conventions";
+class ApiSceneConventions : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ApiSceneConventions, Vec3PositionAndSeparateMatricesRunAsWritten) {
+  const fs::path dir = fs::temp_directory_path() / ("snell-scene-conventions-" + GetParam());
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "a.vert") << kVertex;
@@ -75,7 +78,7 @@ TEST(VkSceneConventions, Vec3PositionAndSeparateMatricesRunAsWritten) {
   CaptureJob job{loadProgram(manifest), bindings.uniforms, bindings.attributes,
                  manifest.captureVertex, bindings.vertexCount};
   const CaptureOutcome outcome =
-      makeVkBackend(BackendOptions{.validation = true})->captureVertexOutputs(job);
+      makeBackend(GetParam(), BackendOptions{.validation = true})->captureVertexOutputs(job);
   fs::remove_all(dir);
   ASSERT_TRUE(outcome.compile.ok) << outcome.compile.log;
 
@@ -112,6 +115,8 @@ TEST(VkSceneConventions, Vec3PositionAndSeparateMatricesRunAsWritten) {
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Apis, ApiSceneConventions, ::testing::Values("gl", "vk"));
 
 }  // namespace
 }  // namespace snell
