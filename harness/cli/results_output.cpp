@@ -10,25 +10,16 @@
 #include "baseline/results_csv.h"
 #include "core/atomic_file.h"
 #include "report/junit.h"
+#include "report/phase_summary.h"
 #include "report/summary_table.h"
 
 namespace snell::cli {
 namespace {
 
-void printThroughput(const std::vector<CaseResult>& results) {
-  std::map<std::string, std::pair<std::size_t, double>> perBackend;  // vectors, seconds
+void printWorstSlack(const std::vector<CaseResult>& results) {
   std::map<std::string, double> worst;
-  for (const CaseResult& r : results) {
-    perBackend[r.backend].first += r.vectorsChecked();
-    perBackend[r.backend].second += r.backendSeconds;
-    worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
-  }
-  for (const auto& [backend, totals] : perBackend)
-    fmt::print(
-        "{}: {} vectors checked, {:.0f} per second of backend time (compile, draw, read back), "
-        "worst slack {:.3f}\n",
-        backend, totals.first, totals.second > 0 ? totals.first / totals.second : 0.0,
-        worst[backend]);
+  for (const CaseResult& r : results) worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
+  for (const auto& [backend, slack] : worst) fmt::print("{}: worst slack {:.3f}\n", backend, slack);
 }
 
 }  // namespace
@@ -44,6 +35,11 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   if (!output.json.empty())
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".csv"),
                         toResultsCsv(report));
+  const RunTiming timing =
+      summarizeTiming(results, output.wallSeconds, output.workers, output.crossApiSeconds);
+  if (!output.json.empty() && output.wallSeconds > 0)
+    writeFileAtomically(std::filesystem::path(output.json).replace_extension(".timing.json"),
+                        runTimingJson(timing).dump(2) + "\n");
   if (!output.junit.empty()) {
     JUnitNotes notes = junitNotesOf(report);
     notes.incomplete = incomplete;
@@ -51,7 +47,8 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   }
 
   printSummaryTable(std::cout, results);
-  printThroughput(results);
+  printWorstSlack(results);
+  if (output.wallSeconds > 0) printRunTiming(std::cout, timing);
   // Failures first, with why; then what passes with a story to tell: the
   // diagnostics of listings that must not compile, and why a backend is
   // not supported.

@@ -15,6 +15,11 @@ struct ResultsOutput {
   std::string junit;  // empty: none
   int interruptedBy = 0;
   std::size_t planned = 0;
+  // `run` only (merge has no timing of its own): the wall time, the
+  // workers and the supervisor's images across APIs. wallSeconds 0: none.
+  double wallSeconds = 0;
+  int workers = 0;
+  double crossApiSeconds = 0;
 };
 
 // Returns the exit code: 130 when interrupted, 1 for an unexpected failure, else 0.

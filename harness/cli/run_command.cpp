@@ -1,3 +1,5 @@
+#include <chrono>
+
 #include "cli/commands.h"
 #include "cli/results_output.h"
 #include "cli/suite_session.h"
@@ -24,9 +26,13 @@ Command addRunCommand(CLI::App& app) {
                   "kept, the others run")
       ->check(CLI::ExistingFile);
   return [options, junit] {
+    const auto start = std::chrono::steady_clock::now();
     const SuiteRun suite = runSuite(*options, false, true);
-    return reportResults(suite.results, suite.expectations, suite.skipped,
-                         {options->json, *junit, suite.interruptedBy, suite.planned});
+    return reportResults(
+        suite.results, suite.expectations, suite.skipped,
+        {options->json, *junit, suite.interruptedBy, suite.planned,
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+         suite.workers, suite.crossApiSeconds});
   };
 }
 

@@ -178,6 +178,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                         ? options.jobs
                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   supervisor.stop = interrupt.flag();
+  run.workers = supervisor.jobs;
   std::size_t finished = slots.size() - tasks.size();
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& result) {
     ++finished;
@@ -211,7 +212,10 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     });
     run.interruptedBy = interrupt.signal();
   }
+  const auto crossApiStart = std::chrono::steady_clock::now();
   checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results);
+  run.crossApiSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - crossApiStart).count();
   // The streamed file is in completion order; the kept one is in task order,
   // so it is the same whatever the number of workers.
   if (json) json->finish(toResultsJsonLines(run.results, run.interruptedBy != 0));

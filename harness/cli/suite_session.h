@@ -16,8 +16,8 @@ struct SuiteOptions {
   // Registered names joined by commas, or all. The default is the drivers
   // whose goldens the repository keeps.
   std::string backend = "gl,vk";
-  std::string device;           // --device, passed to every worker
-  std::string glProvider;       // --gl-provider, passed to every worker
+  std::string device;      // --device, passed to every worker
+  std::string glProvider;  // --gl-provider, passed to every worker
   std::string filter;
   std::string shaders;
   std::string golden;
@@ -54,6 +54,8 @@ struct SuiteRun {
   std::vector<SkippedCase> skipped;  // kept out of the run by a skips file
   int interruptedBy = 0;             // the signal that stopped the run, or 0
   std::size_t planned = 0;           // results the run would have given
+  int workers = 0;                   // worker processes side by side
+  double crossApiSeconds = 0;        // the supervisor's images across APIs
 };
 
 // The options `run` and `bless` share, with the repository's folders as defaults.

@@ -19,6 +19,8 @@ Command addWorkerCommand(CLI::App& app) {
   sub->add_option("--golden", options->goldenDir, "Folder of goldens; empty for none")->required();
   sub->add_option("--run-id", options->runId,
                   "Share each case's CPU reference image with the run's other workers");
+  sub->add_option("--spawned-at", options->spawnedAtNs,
+                  "Steady-clock nanoseconds when the supervisor spawned this worker");
   sub->add_option("--bless-flags", options->blessFlags,
                   "The user's --shaders/--golden flags, for the advice to bless a golden");
   return [options] { return runWorker(*options); };

@@ -6,6 +6,7 @@
 #include "backends/backend.h"
 #include "compare/image_compare.h"
 #include "compare/vector_check.h"
+#include "core/phase_clock.h"
 #include "core/status.h"
 
 namespace snell {
@@ -25,6 +26,9 @@ struct CaseResult {
   double seconds = 0;         // the whole case
   double backendSeconds = 0;  // compile + draw + read back
   double oracleSeconds = 0;   // 0 when the oracle result came from the cache
+  // The case's wall time by phase, which add up to `seconds`; `start` comes
+  // on top: a worker's start-up, charged to the first case it runs.
+  PhaseTimes phases;
   // The statuses of reruns of an unexpected failure, in order: a failure
   // that passes on a rerun is a flake, and is reported as one.
   std::vector<Status> reruns;

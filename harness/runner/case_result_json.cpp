@@ -11,6 +11,24 @@ Status statusOf(const std::string& name) {
   throw nlohmann::json::other_error::create(501, "unknown status " + name, nullptr);
 }
 
+nlohmann::json phasesJson(const PhaseTimes& phases) {
+  nlohmann::json out = nlohmann::json::object();
+  for (Phase p : kAllPhases) out[std::string(phaseName(p))] = phases[p];
+  return out;
+}
+
+// Absent from records written before phases were timed: all zero then.
+PhaseTimes phasesFromJson(const nlohmann::json& record) {
+  PhaseTimes phases;
+  if (!record.contains("phases")) return phases;
+  const nlohmann::json& j = record.at("phases");
+  if (!j.is_object()) throw nlohmann::json::type_error::create(302, "phases must be an object", &j);
+  for (Phase p : kAllPhases)
+    if (j.contains(std::string(phaseName(p))))
+      phases[p] = j.at(std::string(phaseName(p))).get<double>();
+  return phases;
+}
+
 }  // namespace
 
 nlohmann::json toJson(const CaseResult& r) {
@@ -33,6 +51,7 @@ nlohmann::json toJson(const CaseResult& r) {
                            {"seconds", r.seconds},
                            {"backend_seconds", r.backendSeconds},
                            {"oracle_seconds", r.oracleSeconds},
+                           {"phases", phasesJson(r.phases)},
                            {"reruns", reruns}};
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
   return record;
@@ -57,6 +76,7 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   r.seconds = j.at("seconds").get<double>();
   r.backendSeconds = j.at("backend_seconds").get<double>();
   r.oracleSeconds = j.at("oracle_seconds").get<double>();
+  r.phases = phasesFromJson(j);
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

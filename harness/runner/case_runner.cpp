@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/errors.h"
+#include "core/phase_clock.h"
 #include "core/scene_file.h"
 #include "runner/builtin_eval.h"
 #include "runner/checks/check_kind.h"
@@ -38,6 +39,7 @@ const std::vector<OracleVarying>& OracleCache::get(const Case& c, const NamedOra
   *secondsSpent = 0;
   const std::tuple key{c.id, named.label, rules};
   if (auto it = results_.find(key); it != results_.end()) return it->second;
+  const PhaseScope phase(Phase::Oracle);
   const auto start = std::chrono::steady_clock::now();
   const Manifest& m = *c.manifest;
   const VertexOracle* oracle = named.oracle.get();
@@ -60,6 +62,14 @@ const std::vector<OracleVarying>& OracleCache::get(const Case& c, const NamedOra
 
 CaseResult CaseRunner::run(const Case& c) {
   const auto start = std::chrono::steady_clock::now();
+  PhaseRecording phases;
+  CaseResult result = runChecks(c);
+  result.phases = phases.finish();
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+CaseResult CaseRunner::runChecks(const Case& c) {
   const Manifest& m = *c.manifest;
   CaseResult result;
   result.caseId = c.id;
@@ -73,13 +83,11 @@ CaseResult CaseRunner::run(const Case& c) {
   if (const auto reason = m.notSupported.find(apiKey(driver_)); reason != m.notSupported.end()) {
     result.status = Status::NotSupported;
     result.message = reason->second;
-    result.seconds = secondsSince(start);
     return result;
   }
   if (std::string why = backend_.whyCannotRun(loadProgram(m)); !why.empty()) {
     result.status = Status::NotSupported;
     result.message = why;
-    result.seconds = secondsSince(start);
     return result;
   }
   const ResolvedBindings bindings = resolveBindings(m, scenes_.get(c.spec.scene));
@@ -103,7 +111,6 @@ CaseResult CaseRunner::run(const Case& c) {
       result.status = worstOf(result.status, Status::Fail);
       result.message = reasons + result.message;
     }
-  result.seconds = secondsSince(start);
   return result;
 }
 
@@ -115,7 +122,10 @@ void CaseRunner::runExpectedCompileError(const Case& c, CaseResult& result) {
   const Manifest& m = *c.manifest;
   const auto backendStart = std::chrono::steady_clock::now();
   const ProgramSource program = loadProgram(m);
-  const CompileOutcome outcome = backend_.compile(program);
+  const CompileOutcome outcome = [&] {
+    const PhaseScope phase(Phase::Compile);
+    return backend_.compile(program);
+  }();
   result.backendSeconds += secondsSince(backendStart);
   result.compileLog = outcome.log;
   if (outcome.ok) {

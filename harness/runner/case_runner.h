@@ -61,6 +61,7 @@ class CaseRunner {
   CaseResult run(const Case& c);
 
  private:
+  CaseResult runChecks(const Case& c);
   void runExpectedCompileError(const Case& c, CaseResult& result);
 
   Backend& backend_;

@@ -7,6 +7,7 @@
 #include <chrono>
 
 #include "core/errors.h"
+#include "core/phase_clock.h"
 #include "oracle/vertex_oracle.h"
 #include "runner/builtin_eval.h"
 #include "runner/failure_report.h"
@@ -176,11 +177,14 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
 
   for (const NamedOracle& oracle : oracles) {
     const auto start = std::chrono::steady_clock::now();
-    std::vector<OracleVarying> expected =
-        oracle.oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
-                                 precisionRulesForApi(backend.driverInfo().api)});
+    std::vector<OracleVarying> expected = [&] {
+      const PhaseScope phase(Phase::Oracle);
+      return oracle.oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
+                                      precisionRulesForApi(backend.driverInfo().api)});
+    }();
     check.oracleSeconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const PhaseScope comparing(Phase::Compare);
     std::string failures;
     for (const CapturedVarying& values : observed) {
       const auto found =

@@ -4,6 +4,7 @@
 
 #include "compare/image_io.h"
 #include "core/errors.h"
+#include "core/phase_clock.h"
 #include "golden/golden_store.h"
 
 namespace snell {
@@ -64,6 +65,22 @@ RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBi
   return job;
 }
 
+namespace {
+
+ImageComparison compareTimed(const std::string& against, const Image& image, const Image& other,
+                             const std::vector<PixelMask>& mask, const ImageTolerance& rules) {
+  const PhaseScope phase(Phase::Compare);
+  return compareImages(against, image, other, mask, rules);
+}
+
+void writeHeatMapTimed(const fs::path& path, const Image& image, const Image& other,
+                       const std::vector<PixelMask>& mask, double fail) {
+  const PhaseScope phase(Phase::Images);
+  writeDifferenceHeatMap(path, image, other, mask, fail);
+}
+
+}  // namespace
+
 std::string blessCommand(const std::string& backend, const std::string& blessFlags,
                          const std::string& caseId) {
   return fmt::format("snell bless --backend {}{}{}{}", backend, blessFlags.empty() ? "" : " ",
@@ -82,22 +99,23 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
   }
   const std::string name = backend.name();
   const fs::path dir = options.outDir / c.id;
-  fs::create_directories(dir);
-  writeImageAtomically(renderedImagePath(options.outDir, c.id, name), outcome.image);
-  writeImageAtomically(dir / (name + ".png"), outcome.image);
-  // Both backends' workers write these; the contents are the same and each
-  // write is a rename, so neither sees the other's half-written file.
-  writeImageAtomically(dir / "reference.png", reference.color);
-  // In float too, for the report's heat maps (the PNG is 8-bit sRGB).
-  writeImageAtomically(dir / "reference.exr", reference.color);
-  writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
-  writeImageAtomically(maskImagePath(options.outDir, c.id), maskAsImage(reference));
-
-  ImageComparison vsReference =
-      compareImages("reference", outcome.image, reference.color, reference.mask, c.spec.image);
-  writeDifferenceHeatMap(dir / (name + "-vs-reference.png"), outcome.image, reference.color,
-                         reference.mask, c.spec.image.fail);
-  check.comparisons.push_back(std::move(vsReference));
+  {
+    const PhaseScope phase(Phase::Images);
+    fs::create_directories(dir);
+    writeImageAtomically(renderedImagePath(options.outDir, c.id, name), outcome.image);
+    writeImageAtomically(dir / (name + ".png"), outcome.image);
+    // Both backends' workers write these; the contents are the same and each
+    // write is a rename, so neither sees the other's half-written file.
+    writeImageAtomically(dir / "reference.png", reference.color);
+    // In float too, for the report's heat maps (the PNG is 8-bit sRGB).
+    writeImageAtomically(dir / "reference.exr", reference.color);
+    writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
+    writeImageAtomically(maskImagePath(options.outDir, c.id), maskAsImage(reference));
+  }
+  check.comparisons.push_back(
+      compareTimed("reference", outcome.image, reference.color, reference.mask, c.spec.image));
+  writeHeatMapTimed(dir / (name + "-vs-reference.png"), outcome.image, reference.color,
+                    reference.mask, c.spec.image.fail);
 
   const std::string goldenKey = options.goldenKey.empty() ? name : options.goldenKey;
   if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey)) {
@@ -107,13 +125,15 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
         goldenKey, blessCommand(name, options.blessFlags, ""));
   } else if (!options.goldenDir.empty()) {
     try {
-      const Golden golden = readGolden(options.goldenDir, c.id, goldenKey, scene.width,
-                                       scene.height, blessCommand(name, options.blessFlags, c.id));
-      ImageComparison vsGolden =
-          compareImages("golden", outcome.image, golden.image, reference.mask, c.spec.image);
-      writeDifferenceHeatMap(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
-                             reference.mask, c.spec.image.fail);
-      check.comparisons.push_back(std::move(vsGolden));
+      const Golden golden = [&] {
+        const PhaseScope phase(Phase::Images);
+        return readGolden(options.goldenDir, c.id, goldenKey, scene.width, scene.height,
+                          blessCommand(name, options.blessFlags, c.id));
+      }();
+      check.comparisons.push_back(
+          compareTimed("golden", outcome.image, golden.image, reference.mask, c.spec.image));
+      writeHeatMapTimed(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
+                        reference.mask, c.spec.image.fail);
     } catch (const UsageError& error) {
       check.goldenProblem = error.what();
     }

@@ -10,6 +10,7 @@
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/phase_clock.h"
 #include "runner/image_check.h"
 #include "runner/listing_oracles.h"
 
@@ -69,6 +70,7 @@ ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                        oracles.vertex.get(),
                        oracles.fragment.get()};
   ++rendered_;
+  const PhaseScope phase(Phase::Oracle);
   return renderReferenceImage(input);
 }
 
@@ -80,6 +82,7 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
                  owner = dir / "reference.run";
   const FileLock lock(dir / "reference.lock");
   if (contentsOf(owner) == runId_) {
+    const PhaseScope phase(Phase::Images);
     try {
       ReferenceImage shared{readImage(color), maskFromImage(readImage(mask))};
       if (shared.color.width == scene.width && shared.color.height == scene.height) return shared;
@@ -88,6 +91,7 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
     }
   }
   ReferenceImage image = render(c, scene, bindings);
+  const PhaseScope phase(Phase::Images);
   writeImageAtomically(color, image.color);
   writeImageAtomically(mask, maskAsImage(image));
   writeFileAtomically(owner, runId_);

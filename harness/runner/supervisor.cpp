@@ -87,6 +87,11 @@ class Supervision {
       if (!options_.blessFlags.empty())
         argv.insert(argv.end(), {"--bless-flags", options_.blessFlags});
       if (!options_.runId.empty()) argv.insert(argv.end(), {"--run-id", options_.runId});
+      argv.insert(
+          argv.end(),
+          {"--spawned-at", std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                              std::chrono::steady_clock::now().time_since_epoch())
+                                              .count())});
       slot.worker = std::make_unique<WorkerProcess>(argv);
       slot.backend = task.backend;
     }

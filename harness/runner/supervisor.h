@@ -32,8 +32,8 @@ struct SupervisorOptions {
   // only the finished results are returned.
   const volatile std::sig_atomic_t* stop = nullptr;
   std::vector<std::string> backendArgs;  // --device, --gl-provider: passed to every worker
-  std::string blessFlags;  // WorkerOptions::blessFlags
-  std::string runId;       // WorkerOptions::runId
+  std::string blessFlags;                // WorkerOptions::blessFlags
+  std::string runId;                     // WorkerOptions::runId
 };
 
 using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "backends/backend.h"
 #include "backends/backend_registry.h"
@@ -50,6 +52,7 @@ int runWorker(const WorkerOptions& options) {
   ReferenceCache references =
       options.runId.empty() ? ReferenceCache() : ReferenceCache(options.outDir, options.runId);
   std::unique_ptr<CaseRunner> runner;
+  double startSeconds = 0;  // charged to the first case
   for (std::string id; std::getline(std::cin, id);) {
     auto it = byId.find(id);
     if (it == byId.end()) throw UsageError(fmt::format("worker: no case `{}`", id));
@@ -59,8 +62,15 @@ int runWorker(const WorkerOptions& options) {
       runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
                                             ImageCheckOptions{options.outDir, options.goldenDir,
                                                               entry.goldenKey, options.blessFlags});
+      if (options.spawnedAtNs > 0)
+        startSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch() -
+                                          std::chrono::nanoseconds(options.spawnedAtNs))
+                .count();
     }
-    std::cout << toJson(runner->run(*it->second)).dump() << std::endl;  // endl: flush per case
+    CaseResult result = runner->run(*it->second);
+    result.phases[Phase::Start] = std::exchange(startSeconds, 0.0);
+    std::cout << toJson(result).dump() << std::endl;  // endl: flush per case
   }
   return 0;
 }

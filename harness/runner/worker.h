@@ -21,12 +21,16 @@ struct WorkerOptions {
   // `run`, `devices` and `--version --drivers` learn whether a driver comes
   // up, without loading any driver themselves.
   bool describe = false;
-  std::string outDir;     // rendered images, heat maps and masks
-  std::string goldenDir;  // empty: no golden comparison (bless)
+  std::string outDir;      // rendered images, heat maps and masks
+  std::string goldenDir;   // empty: no golden comparison (bless)
   std::string blessFlags;  // ImageCheckOptions::blessFlags
   // The run this worker belongs to: its workers share each case's CPU
   // reference image through outDir (runner/reference_cache.h). Empty: not shared.
   std::string runId;
+  // When the supervisor spawned this worker (steady clock, nanoseconds):
+  // the time until its driver is up is the first case's `start` phase.
+  // 0: unknown, not charged.
+  long long spawnedAtNs = 0;
 };
 
 // The JSON a describing worker prints, as in a result's "driver".

@@ -37,7 +37,8 @@ std::string runResults(const std::string& environment, int jobs) {
   std::string out;
   for (std::string line; std::getline(in, line);) {
     nlohmann::json j = nlohmann::json::parse(line);
-    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds"}) j.erase(timing);
+    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds", "phases"})
+      j.erase(timing);
     out += j.dump() + "\n";
   }
   fs::remove(json);

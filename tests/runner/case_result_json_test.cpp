@@ -32,10 +32,26 @@ TEST(CaseResultJson, RoundTripsEveryField) {
   r.seconds = 1.5;
   r.backendSeconds = 1.0;
   r.oracleSeconds = 0.25;
+  r.phases[Phase::Start] = 0.125;
+  r.phases[Phase::Oracle] = 0.25;
+  r.phases[Phase::Draw] = 0.5;
   const CaseResult back = caseResultFromJson(nlohmann::json::parse(toJson(r).dump()));
   EXPECT_EQ(toJson(back), toJson(r));
   EXPECT_TRUE(std::isinf(back.varyings[0].worstSlack));
   EXPECT_EQ(back.status, Status::Fail);
+  EXPECT_DOUBLE_EQ(back.phases[Phase::Start], 0.125);
+  EXPECT_DOUBLE_EQ(back.phases[Phase::Draw], 0.5);
+}
+
+TEST(CaseResultJson, PhasesAreOptionalButMustBeAnObject) {
+  nlohmann::json older = toJson(CaseResult{});
+  older.erase("phases");
+  EXPECT_DOUBLE_EQ(caseResultFromJson(older).phases.total(), 0);
+  nlohmann::json bad = toJson(CaseResult{});
+  bad["phases"] = 3;
+  EXPECT_THROW(caseResultFromJson(bad), nlohmann::json::exception);
+  bad["phases"] = {{"draw", "slow"}};
+  EXPECT_THROW(caseResultFromJson(bad), nlohmann::json::exception);
 }
 
 TEST(CaseResultJson, MalformedRecordThrows) {

@@ -6,6 +6,7 @@
 
 #include "backends/gl/gl_context_state.h"
 #include "backends/gl/gl_driver_info.h"
+#include "core/phase_clock.h"
 
 namespace snell {
 
@@ -33,12 +34,16 @@ class GlBackend final : public Backend {
 
   CompileOutcome compile(const ProgramSource& program) override {
     stateFor(program.profile);
+    const PhaseScope phase(Phase::Compile);
     return buildGlProgram(program, {}).outcome;
   }
 
   CaptureOutcome captureVertexOutputs(const CaptureJob& job) override {
     GlContextState& state = stateFor(job.program.profile);
-    GlLinkedProgram& program = state.programs().get(job.program, job.varyings);
+    GlLinkedProgram& program = [&]() -> GlLinkedProgram& {
+      const PhaseScope phase(Phase::Compile);
+      return state.programs().get(job.program, job.varyings);
+    }();
     CaptureOutcome outcome;
     outcome.compile = program.compile;
     if (!outcome.compile.ok) return outcome;
@@ -56,7 +61,10 @@ class GlBackend final : public Backend {
     if (!job.probes.empty())
       source.fragment = insertFragmentProbes(source.fragment, source.fragmentPath, job.probes,
                                              probeOutputStyleFor(source.fragment));
-    GlLinkedProgram& program = state.programs().get(source, {});
+    GlLinkedProgram& program = [&]() -> GlLinkedProgram& {
+      const PhaseScope phase(Phase::Compile);
+      return state.programs().get(source, {});
+    }();
     RenderOutcome outcome;
     outcome.compile = program.compile;
     if (!outcome.compile.ok) return outcome;

@@ -52,6 +52,7 @@
   X(glEnableVertexAttribArray)     \
   X(glEndQuery)                    \
   X(glEndTransformFeedback)        \
+  X(glFinish)                      \
   X(glFramebufferRenderbuffer)     \
   X(glFrontFace)                   \
   X(glGenBuffers)                  \
@@ -170,6 +171,7 @@ GlFunctions loadGlFunctions(GlProcLookup lookup, void* userData, const char* pro
 #define glEnableVertexAttribArray (::snell::currentGlFunctions->glEnableVertexAttribArray_)
 #define glEndQuery (::snell::currentGlFunctions->glEndQuery_)
 #define glEndTransformFeedback (::snell::currentGlFunctions->glEndTransformFeedback_)
+#define glFinish (::snell::currentGlFunctions->glFinish_)
 #define glFramebufferRenderbuffer (::snell::currentGlFunctions->glFramebufferRenderbuffer_)
 #define glFrontFace (::snell::currentGlFunctions->glFrontFace_)
 #define glGenBuffers (::snell::currentGlFunctions->glGenBuffers_)

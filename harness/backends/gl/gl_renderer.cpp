@@ -8,6 +8,7 @@
 #include "backends/gl/gl_cube_samplers.h"
 #include "backends/gl/gl_error_check.h"
 #include "core/errors.h"
+#include "core/phase_clock.h"
 
 namespace snell {
 
@@ -15,8 +16,8 @@ namespace {
 
 void checkJob(const GlLinkedProgram& program, const RenderJob& job) {
   if (job.width <= 0 || job.height <= 0)
-    throw UsageError("render size " + std::to_string(job.width) + "x" +
-                     std::to_string(job.height) + " is empty");
+    throw UsageError("render size " + std::to_string(job.width) + "x" + std::to_string(job.height) +
+                     " is empty");
   if (job.indices.size() % 3 != 0)
     throw UsageError("render job has " + std::to_string(job.indices.size()) +
                      " indices; a triangle list needs a multiple of 3");
@@ -26,8 +27,9 @@ void checkJob(const GlLinkedProgram& program, const RenderJob& job) {
   // draw buffer.
   const auto& outputs = program.fragmentOutputs;
   if (outputs.empty()) return;
-  const bool atZero = std::any_of(outputs.begin(), outputs.end(),
-                                  [](const GlFragmentOutput& output) { return output.location == 0; });
+  const bool atZero =
+      std::any_of(outputs.begin(), outputs.end(),
+                  [](const GlFragmentOutput& output) { return output.location == 0; });
   if (atZero) return;
   std::string declared;
   for (const GlFragmentOutput& output : outputs)
@@ -158,6 +160,7 @@ std::vector<Image> GlRenderer::run(GlLinkedProgram& program, const RenderJob& jo
   const int colourTargets = 1 + static_cast<int>(job.probes.size());
   GlFramebuffer& target = framebuffers_.get(job.width, job.height, colourTargets);
 
+  const PhaseScope phase(Phase::Draw);
   RenderStateGuard guard(program.program.id(), inputs_.vertexArray(), target.id(),
                          samplers.units());
   program.uniforms.apply(job.uniforms);
@@ -170,9 +173,12 @@ std::vector<Image> GlRenderer::run(GlLinkedProgram& program, const RenderJob& jo
 
   clearTargets(job, colourTargets);
   if (!job.indices.empty()) {
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(job.indices.size()), GL_UNSIGNED_INT, nullptr);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(job.indices.size()), GL_UNSIGNED_INT,
+                   nullptr);
     throwOnGlError("glDrawElements(GL_TRIANGLES, GL_UNSIGNED_INT)");
   }
+  glFinish();  // the draw's time is the draw's, not the read-back's
+  const PhaseScope reading(Phase::ReadBack);
   std::vector<Image> images;
   for (int k = 0; k < colourTargets; ++k) images.push_back(readBack(job.width, job.height, k));
   return images;

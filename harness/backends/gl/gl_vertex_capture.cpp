@@ -6,6 +6,7 @@
 
 #include "backends/gl/gl_error_check.h"
 #include "core/errors.h"
+#include "core/phase_clock.h"
 
 namespace snell {
 
@@ -57,20 +58,21 @@ GlVertexCapture::~GlVertexCapture() {
   glDeleteBuffers(1, &feedbackBuffer_);
 }
 
-std::vector<CapturedVarying> GlVertexCapture::run(GlLinkedProgram& program,
-                                                  const CaptureJob& job) {
+std::vector<CapturedVarying> GlVertexCapture::run(GlLinkedProgram& program, const CaptureJob& job) {
   GlVertexInputs::check(program, job.attributes, job.vertexCount);
   if (job.vertexCount == 0 || program.varyings.stride == 0) {
     // No draw: with zero outputs glBeginTransformFeedback itself is an error.
     return program.varyings.split({}, 0);
   }
 
+  const PhaseScope phase(Phase::Draw);
   CaptureStateGuard guard(program.program.id(), inputs_.vertexArray(), target_.id());
   program.uniforms.apply(job.uniforms);
   throwOnGlError("glUniform*");
   separateSamplerUnits(program.uniforms);
   inputs_.bindAttributes(program, job.attributes, job.vertexCount);
   const std::vector<float> records = drawAndRead(program, job.vertexCount);
+  const PhaseScope reading(Phase::ReadBack);
   return program.varyings.split(records, job.vertexCount);
 }
 
@@ -98,7 +100,9 @@ std::vector<float> GlVertexCapture::drawAndRead(const GlLinkedProgram& program,
   glDisable(GL_RASTERIZER_DISCARD);
   errors.check("glEndQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN)");
   errors.throwIfAny();
+  glFinish();  // the draw's time is the draw's, not the read-back's
 
+  const PhaseScope reading(Phase::ReadBack);
   GLuint written = 0;
   glGetQueryObjectuiv(primitivesQuery_, GL_QUERY_RESULT, &written);
   std::vector<float> records(floats);

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "backends/vk/glsl_to_spirv.h"
+#include "backends/vk/legacy_adapter.h"
 #include "backends/vk/lru_cache.h"
 #include "backends/vk/program_key.h"
 #include "backends/vk/spirv_output_locations.h"
@@ -19,7 +20,7 @@
 #include "backends/vk/vk_render.h"
 #include "backends/vk/vk_shader_module.h"
 #include "core/errors.h"
-#include "backends/vk/legacy_adapter.h"
+#include "core/phase_clock.h"
 
 namespace snell {
 
@@ -134,6 +135,7 @@ class VkBackend final : public Backend {
   CaptureOutcome capture(const CaptureJob& job) {
     PreparedCapture& prepared =
         captures_.getOrMake(preparedCaptureKey(job.program, job.varyings), [&] {
+          const PhaseScope phase(Phase::Compile);
           return prepareCapture(device_, captureRunner_.renderPass(), compiled(job.program),
                                 job.program, job.varyings);
         });
@@ -168,7 +170,12 @@ class VkBackend final : public Backend {
     // The pipeline draws triangles; the padding vertices are dropped below.
     draw.vertexCount = static_cast<std::uint32_t>((job.vertexCount + 2) / 3 * 3);
     draw.stride = prepared.stride;
-    outcome.varyings = splitRecords(captureRunner_.run(draw), prepared, job.vertexCount);
+    const std::span<const float> records = [&] {
+      const PhaseScope phase(Phase::Draw);
+      return captureRunner_.run(draw);
+    }();
+    const PhaseScope reading(Phase::ReadBack);
+    outcome.varyings = splitRecords(records, prepared, job.vertexCount);
     return outcome;
   }
 
@@ -201,6 +208,7 @@ class VkBackend final : public Backend {
                                              ProbeOutputStyle::Outputs);
     const auto colourTargets = static_cast<std::uint32_t>(1 + job.probes.size());
     PreparedRender& prepared = renders_.getOrMake(programKey(source), [&] {
+      const PhaseScope phase(Phase::Compile);
       if (job.probes.empty())
         return prepareRender(device_, renderRunner_.renderPass(1), 1, compiled(source), source);
       return prepareRender(device_, renderRunner_.renderPass(colourTargets), colourTargets,

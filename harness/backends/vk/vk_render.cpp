@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "core/errors.h"
+#include "core/phase_clock.h"
 
 namespace snell::vk {
 
@@ -52,6 +53,7 @@ std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
   if (draw.indices.size() % 3 != 0 || draw.width == 0 || draw.height == 0) {
     throw SetupError("a render needs whole triangles and a non-empty target");
   }
+  const PhaseScope phase(Phase::Draw);
   // Uploads submit work of their own, so they come before this draw is recorded.
   for (const CubeMapBinding& cube : draw.cubeMaps) {
     const CubeImage& image = cubeImages_.get(*cube.map, cube.uniform);
@@ -66,13 +68,13 @@ std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
                                          draw.uniformBytes);
 
   const VkRenderPass pass = renderPass(draw.colourTargets);
-  const RenderTarget& target = targets_.getOrMake(
-      std::to_string(draw.width) + "x" + std::to_string(draw.height) + "x" +
-          std::to_string(draw.colourTargets),
-      [&] {
-        return std::make_unique<RenderTarget>(device_, pass, draw.colourTargets, draw.width,
-                                              draw.height);
-      });
+  const RenderTarget& target =
+      targets_.getOrMake(std::to_string(draw.width) + "x" + std::to_string(draw.height) + "x" +
+                             std::to_string(draw.colourTargets),
+                         [&] {
+                           return std::make_unique<RenderTarget>(device_, pass, draw.colourTargets,
+                                                                 draw.width, draw.height);
+                         });
   std::vector<VkDeviceSize> offsets;
   if (!draw.indices.empty()) {
     offsets = fillVertexBuffer(vertices_, draw.streams, draw.vertexCount);
@@ -85,6 +87,7 @@ std::vector<Image> RenderRunner::run(const RenderDraw& draw) {
   record(commands_.begin(), draw, pass, target, offsets);
   commands_.submitAndWait("render");
 
+  const PhaseScope reading(Phase::ReadBack);
   std::vector<Image> images;
   for (std::uint32_t k = 0; k < draw.colourTargets; ++k) {
     Image image(static_cast<int>(draw.width), static_cast<int>(draw.height));

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/errors.h"
+#include "core/phase_clock.h"
 #include "oracle/vertex_oracle.h"
 #include "runner/builtin_eval.h"
 #include "runner/case_runner.h"
@@ -56,6 +57,7 @@ void runVertexOutputs(const Case& c, const ResolvedBindings& bindings, CheckEnvi
     const std::vector<OracleVarying>& expected =
         env.oracles.get(c, oracle, bindings, precisionRulesForApi(env.driver.api), &seconds);
     result.oracleSeconds += seconds;
+    const PhaseScope comparing(Phase::Compare);
     std::vector<VaryingCheck> checks;
     for (std::size_t k = 0; k < expected.size(); ++k)
       checks.push_back(checkVarying(expected[k], outcome.varyings.at(k)));
