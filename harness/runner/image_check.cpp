@@ -87,9 +87,20 @@ std::string blessCommand(const std::string& backend, const std::string& blessFla
                      blessFlags, caseId.empty() ? "" : fmt::format(" --filter '{}'", caseId));
 }
 
+void writeReferenceImages(const fs::path& outDir, const std::string& caseId,
+                          const ReferenceImage& reference) {
+  const PhaseScope phase(Phase::Images);
+  const fs::path dir = outDir / caseId;
+  fs::create_directories(dir);
+  writeImageAtomically(dir / "reference.exr", reference.color);
+  writeImageAtomically(dir / "reference.png", reference.color);
+  writeImageAtomically(maskImagePath(outDir, caseId), maskAsImage(reference));
+  writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
+}
+
 ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                       const ResolvedBindings& bindings, const ReferenceImage& reference,
-                      const ImageCheckOptions& options) {
+                      const ImageCheckOptions& options, bool referenceWritten) {
   const RenderOutcome outcome = backend.render(sceneRenderJob(*c.manifest, scene, bindings));
   ImageCheck check;
   if (!outcome.compile.ok) {
@@ -104,13 +115,7 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
     fs::create_directories(dir);
     writeImageAtomically(renderedImagePath(options.outDir, c.id, name), outcome.image);
     writeImageAtomically(dir / (name + ".png"), outcome.image);
-    // Both backends' workers write these; the contents are the same and each
-    // write is a rename, so neither sees the other's half-written file.
-    writeImageAtomically(dir / "reference.png", reference.color);
-    // In float too, for the report's heat maps (the PNG is 8-bit sRGB).
-    writeImageAtomically(dir / "reference.exr", reference.color);
-    writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);
-    writeImageAtomically(maskImagePath(options.outDir, c.id), maskAsImage(reference));
+    if (!referenceWritten) writeReferenceImages(options.outDir, c.id, reference);
   }
   check.comparisons.push_back(
       compareTimed("reference", outcome.image, reference.color, reference.mask, c.spec.image));

@@ -56,8 +56,15 @@ std::vector<PixelMask> maskFromImage(const Image& image);
 // the scene's triangles, environment, decal and image size.
 RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBindings& bindings);
 
+// The reference and its mask, in float for the report's heat maps and as
+// PNG for people: reference.exr, reference.png, mask.exr, mask.png.
+void writeReferenceImages(const std::filesystem::path& outDir, const std::string& caseId,
+                          const ReferenceImage& reference);
+
+// `referenceWritten`: the reference cache wrote the reference's files for
+// this run already (one worker does, for all backends), so this check does not.
 ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                       const ResolvedBindings& bindings, const ReferenceImage& reference,
-                      const ImageCheckOptions& options);
+                      const ImageCheckOptions& options, bool referenceWritten);
 
 }  // namespace snell

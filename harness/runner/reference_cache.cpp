@@ -91,9 +91,9 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
     }
   }
   ReferenceImage image = render(c, scene, bindings);
-  const PhaseScope phase(Phase::Images);
-  writeImageAtomically(color, image.color);
-  writeImageAtomically(mask, maskAsImage(image));
+  // Every file of the reference, once for the run's workers: they read
+  // the float ones back, and the report shows the rest.
+  writeReferenceImages(outDir_, c.id, image);
   writeFileAtomically(owner, runId_);
   return image;
 }

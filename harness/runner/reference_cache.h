@@ -26,6 +26,10 @@ class ReferenceCache {
 
   const ReferenceImage& get(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
 
+  // True when the reference's files (runner/image_check.h's
+  // writeReferenceImages) are written here, once for the whole run.
+  bool writesImages() const { return !runId_.empty(); }
+
   // How many references this cache rendered itself (the rest it read).
   std::size_t rendered() const { return rendered_; }
 

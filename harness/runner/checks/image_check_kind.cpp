@@ -83,7 +83,8 @@ void ImageCheckKind::run(const Case& c, const ResolvedBindings& bindings, CheckE
   const Scene& scene = env.scenes.get(c.spec.scene);
   const ReferenceImage& reference = env.references.get(c, scene, bindings);
   const auto backendStart = std::chrono::steady_clock::now();
-  const ImageCheck check = checkImage(env.backend, c, scene, bindings, reference, env.imageOptions);
+  const ImageCheck check = checkImage(env.backend, c, scene, bindings, reference, env.imageOptions,
+                                      env.references.writesImages());
   result.backendSeconds += secondsSince(backendStart);
   if (!check.compiled) {
     result.status = Status::CompileError;
