@@ -13,8 +13,9 @@ namespace {
 
 constexpr const char* kFileName = "libsnell_image_library.so";
 
-const SnellImageLibraryFunctions& load() {
-  const std::vector<std::string> candidates = imageLibraryCandidates();
+}  // namespace
+
+const SnellImageLibraryFunctions& openImageLibrary(const std::vector<std::string>& candidates) {
   const SharedLibrary library =
       SharedLibrary::open(candidates,
                           "snell reads, writes and compares images through this module: build it "
@@ -33,8 +34,6 @@ const SnellImageLibraryFunctions& load() {
   return *functions;
 }
 
-}  // namespace
-
 std::vector<std::string> imageLibraryCandidates() {
   const char* override = std::getenv("SNELL_IMAGE_LIBRARY");
   if (override && *override) return {override};
@@ -47,8 +46,8 @@ std::vector<std::string> imageLibraryCandidates() {
 
 const SnellImageLibraryFunctions& imageLibrary() {
   // A function-local static is initialised once, under a lock, and again on
-  // the next call if load() threw.
-  static const SnellImageLibraryFunctions& functions = load();
+  // the next call if opening threw.
+  static const SnellImageLibraryFunctions& functions = openImageLibrary(imageLibraryCandidates());
   return functions;
 }
 

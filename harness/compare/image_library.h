@@ -19,4 +19,8 @@ const SnellImageLibraryFunctions& imageLibrary();
 // The files imageLibrary() tries, in order.
 std::vector<std::string> imageLibraryCandidates();
 
+// Opens the first of `candidates` that loads and checks that it is the
+// module, of this interface version; no caching. Throws SetupError.
+const SnellImageLibraryFunctions& openImageLibrary(const std::vector<std::string>& candidates);
+
 }  // namespace snell
