@@ -2,8 +2,10 @@
 // The OpenImageIO module (compare/oiio/image_library_abi.h), opened on first
 // use. Where it is looked for, in order:
 //   1. $SNELL_IMAGE_LIBRARY, when set: that file and nothing else;
-//   2. the module this snell was built with (its absolute path, compiled in);
-//   3. libsnell_image_library.so beside the running executable.
+//   2. the module this snell was built with (its absolute path, compiled in;
+//      the build puts it beside the snell executable);
+//   3. libsnell_image_library.so beside the running executable, for a copy
+//      of the two elsewhere.
 #include <string>
 #include <vector>
 
