@@ -1,24 +1,15 @@
 #include "compare/image_compare.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "compare/image_library.h"
 #include "core/errors.h"
 
 namespace snell {
 namespace {
-
-OIIO::ImageBuf toBuffer(const Image& image) {
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf buffer(spec);
-  buffer.set_pixels(OIIO::ROI(0, image.width, 0, image.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT,
-                    image.pixels.data());
-  return buffer;
-}
 
 bool masked(const std::vector<PixelMask>& mask, std::size_t pixel) {
   return !mask.empty() && mask[pixel] != PixelMask::None;
@@ -28,9 +19,12 @@ bool masked(const std::vector<PixelMask>& mask, std::size_t pixel) {
 
 const char* imageVerdictName(ImageVerdict verdict) {
   switch (verdict) {
-    case ImageVerdict::Pass: return "pass";
-    case ImageVerdict::Warn: return "warn";
-    case ImageVerdict::Fail: return "fail";
+    case ImageVerdict::Pass:
+      return "pass";
+    case ImageVerdict::Warn:
+      return "warn";
+    case ImageVerdict::Fail:
+      return "fail";
   }
   return "?";
 }
@@ -62,21 +56,23 @@ ImageComparison compareImages(const std::string& against, const Image& observed,
   for (const auto& [reason, n] : result.masked) maskedCount += n;
   result.compared = pixels - maskedCount;
 
-  const OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(
-      toBuffer(observedMasked), toBuffer(expected), static_cast<float>(thresholds.fail),
-      static_cast<float>(thresholds.warn));
-  // r.error is not checked: OIIO sets it whenever a pixel fails, and the
-  // sizes were checked above.
+  SnellImageDifference r{};
+  SnellImageError error;
+  if (imageLibrary().compareRgba(observedMasked.pixels.data(), expected.pixels.data(),
+                                 observed.width, observed.height,
+                                 static_cast<float>(thresholds.fail),
+                                 static_cast<float>(thresholds.warn), &r, &error) != SNELL_IMAGE_OK)
+    throw SetupError(fmt::format("cannot compare with the {} image ({})", against, error.message));
   // OIIO averages over every pixel channel; re-scale to the compared ones.
   const double scale = result.compared ? double(pixels) / double(result.compared) : 0.0;
-  result.maxError = r.maxerror;
-  result.meanError = r.meanerror * scale;
-  result.rmsError = r.rms_error * std::sqrt(scale);
-  result.psnr = r.PSNR;
-  result.maxX = r.maxx;
-  result.maxY = r.maxy;
-  result.failed = r.nfail;
-  result.warned = r.nwarn;
+  result.maxError = r.maxError;
+  result.meanError = r.meanError * scale;
+  result.rmsError = r.rmsError * std::sqrt(scale);
+  result.psnr = r.psnr;
+  result.maxX = r.maxX;
+  result.maxY = r.maxY;
+  result.failed = r.failed;
+  result.warned = r.warned;
   const double failedPercent = result.compared ? 100.0 * result.failed / result.compared : 0.0;
   if (result.maxError > thresholds.hardFail || failedPercent > thresholds.failPercent)
     result.verdict = ImageVerdict::Fail;
@@ -88,24 +84,21 @@ ImageComparison compareImages(const std::string& against, const Image& observed,
 void writeDifferenceHeatMap(const std::filesystem::path& path, const Image& observed,
                             const Image& expected, const std::vector<PixelMask>& mask,
                             double scale) {
-  Image difference(observed.width, observed.height);
   const std::size_t pixels = static_cast<std::size_t>(observed.width) * observed.height;
+  // One value per pixel; masked pixels get -1, which the module draws grey.
+  std::vector<float> difference(pixels);
   for (std::size_t p = 0; p < pixels; ++p) {
     double largest = 0;
     for (int c = 0; c < 4; ++c)
-      largest = std::max(largest, double(std::abs(observed.pixels[p * 4 + c] - expected.pixels[p * 4 + c])));
-    const float value = masked(mask, p) ? -1.0f : static_cast<float>(std::min(1.0, largest / scale));
-    std::fill_n(&difference.pixels[p * 4], 4, value);
+      largest = std::max(largest,
+                         double(std::abs(observed.pixels[p * 4 + c] - expected.pixels[p * 4 + c])));
+    difference[p] = masked(mask, p) ? -1.0f : static_cast<float>(std::min(1.0, largest / scale));
   }
-  OIIO::ImageBuf heat = OIIO::ImageBufAlgo::color_map(toBuffer(difference), 0, "inferno");
-  // Masked pixels (value -1) in flat grey, so they cannot be read as "no error".
-  for (std::size_t p = 0; p < pixels; ++p)
-    if (difference.pixels[p * 4] < 0) {
-      const float grey[3] = {0.5f, 0.5f, 0.5f};
-      heat.setpixel(static_cast<int>(p % observed.width), static_cast<int>(p / observed.width), grey, 3);
-    }
-  if (!heat.write(path.string()))
-    throw SetupError(fmt::format("{}: cannot write the heat map ({})", path.string(), heat.geterror()));
+  SnellImageError error;
+  if (imageLibrary().writeHeatMap(path.c_str(), difference.data(), observed.width, observed.height,
+                                  &error) != SNELL_IMAGE_OK)
+    throw SetupError(
+        fmt::format("{}: cannot write the heat map ({})", path.string(), error.message));
 }
 
 }  // namespace snell

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "core/manifest.h"
 #include "core/image.h"
+#include "core/manifest.h"
 #include "core/pixel_mask.h"
 
 namespace snell {
@@ -38,6 +38,7 @@ ImageComparison compareImages(const std::string& against, const Image& observed,
 // "inferno" map, 0 to `scale`), masked pixels in flat grey; PNG or EXR by
 // the file name's extension. Throws SetupError when the file cannot be written.
 void writeDifferenceHeatMap(const std::filesystem::path& path, const Image& observed,
-                            const Image& expected, const std::vector<PixelMask>& mask, double scale);
+                            const Image& expected, const std::vector<PixelMask>& mask,
+                            double scale);
 
 }  // namespace snell

@@ -1,46 +1,57 @@
 #include "compare/image_io.h"
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <new>
+
+#include "compare/image_library.h"
 #include "core/errors.h"
 
 namespace snell {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// SnellImageAllocate for an Image: sizes it, or answers NULL instead of
+// throwing across the module boundary.
+float* allocatePixels(void* context, int width, int height) {
+  try {
+    Image& image = *static_cast<Image*>(context);
+    image = Image(width, height);
+    return image.pixels.data();
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  } catch (const std::length_error&) {
+    return nullptr;
+  }
+}
+
+}  // namespace
+
 Image readImage(const fs::path& path) {
   if (!fs::exists(path)) throw UsageError(fmt::format("{}: missing", path.string()));
-  // ImageInput, not ImageBuf: ImageBuf reads through OIIO's process-wide
-  // cache, which would hand back a file's old contents after bless rewrote it.
-  std::unique_ptr<OIIO::ImageInput> in = OIIO::ImageInput::open(path.string());
-  if (!in)
-    throw UsageError(fmt::format("{}: unreadable ({})", path.string(), OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
-  if (spec.nchannels != 4)
-    throw UsageError(fmt::format("{}: has {} channels, RGBA (4) expected", path.string(), spec.nchannels));
-  Image image(spec.width, spec.height);
-  if (!in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-    throw UsageError(fmt::format("{}: unreadable, truncated or damaged ({})", path.string(),
-                                 in->geterror()));
-  return image;
+  Image image;
+  SnellImageError error;
+  switch (imageLibrary().readRgba(path.c_str(), &image, allocatePixels, &error)) {
+    case SNELL_IMAGE_OK:
+      return image;
+    case SNELL_IMAGE_BAD_FILE:
+      throw UsageError(fmt::format("{}: {}", path.string(), error.message));
+    default:
+      throw SetupError(fmt::format("{}: cannot read ({})", path.string(), error.message));
+  }
 }
 
 void writeImageAtomically(const fs::path& path, const Image& image) {
-  OIIO::ImageSpec spec(image.width, image.height, 4, OIIO::TypeDesc::FLOAT);
-  OIIO::ImageBuf buffer(spec);
-  buffer.set_pixels(OIIO::ROI(0, image.width, 0, image.height, 0, 1, 0, 4), OIIO::TypeDesc::FLOAT,
-                    image.pixels.data());
   const bool png = path.extension() == ".png";
-  if (png) buffer = OIIO::ImageBufAlgo::colorconvert(buffer, "linear", "sRGB");
   fs::path temporary = path;
   temporary += fmt::format(".tmp{}{}", getpid(), path.extension().string());
-  if (!png) buffer.specmod().attribute("compression", "zip");
-  if (!buffer.write(temporary.string(), png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT))
-    throw SetupError(fmt::format("{}: cannot write ({})", path.string(), buffer.geterror()));
+  SnellImageError error;
+  if (imageLibrary().write(temporary.c_str(), image.pixels.data(), image.width, image.height, 4,
+                           png ? SNELL_IMAGE_SRGB8 : SNELL_IMAGE_FLOAT, &error) != SNELL_IMAGE_OK)
+    throw SetupError(fmt::format("{}: cannot write ({})", path.string(), error.message));
   fs::rename(temporary, path);
 }
 

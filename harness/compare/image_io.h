@@ -1,6 +1,8 @@
 #pragma once
 // Float RGBA images to and from files through OpenImageIO: EXR for
-// comparison (lossless float), PNG for people.
+// comparison (lossless float), PNG for people. OpenImageIO is loaded on the
+// first call (compare/image_library.h); when it cannot be, these throw
+// SetupError saying which files were tried and what to do.
 #include <filesystem>
 
 #include "core/image.h"

@@ -11,8 +11,8 @@
 #include "backends/gl/egl_context.h"
 #include "backends/gl/gl_api.h"
 #include "backends/gl/gl_backend.h"
-#include "backends/gl/shared_library.h"
 #include "core/errors.h"
+#include "core/shared_library.h"
 #include "gl_render_test_jobs.h"
 #include "gl_test_jobs.h"
 
@@ -73,7 +73,7 @@ TEST(GlContextProvider, EglAndOsmesaRenderTheSamePixels) {
   const RenderOutcome b = egl->render(job);
   ASSERT_TRUE(a.compile.ok && b.compile.ok) << a.compile.log << b.compile.log;
   EXPECT_EQ(a.image.pixels, b.image.pixels);
-  EXPECT_EQ(gltest::pixel(b.image, 0, 0)[2], 0.75f);  // a corner the nearer triangle misses
+  EXPECT_EQ(gltest::pixel(b.image, 0, 0)[2], 0.75f);   // a corner the nearer triangle misses
   EXPECT_EQ(gltest::pixel(b.image, 8, 6)[1], 0.125f);  // inside the nearer triangle
 }
 

@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "backends/gl/gl_api.h"
-#include "backends/gl/shared_library.h"
 #include "core/errors.h"
+#include "core/shared_library.h"
 
 namespace snell {
 

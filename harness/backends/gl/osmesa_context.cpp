@@ -11,8 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include "backends/gl/shared_library.h"
 #include "core/errors.h"
+#include "core/shared_library.h"
 
 namespace snell {
 

@@ -1,7 +1,9 @@
 #pragma once
-// A driver library opened at run time (dlopen), so that a process loads
-// OpenGL only when a backend asks for it, and only the provider it uses.
-// Libraries stay loaded until the process ends: drivers do not unload well.
+// A library opened at run time (dlopen), so that a process loads a heavy
+// dependency only when it needs it: OpenGL only when a backend asks for it
+// (and only the provider it uses), OpenImageIO only when an image is read,
+// written or compared. Libraries stay loaded until the process ends:
+// drivers do not unload well.
 #include <string>
 #include <vector>
 

@@ -1,0 +1,54 @@
+#include "compare/image_library.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/errors.h"
+#include "core/shared_library.h"
+
+namespace snell {
+namespace {
+
+constexpr const char* kFileName = "libsnell_image_library.so";
+
+}  // namespace
+
+const SnellImageLibraryFunctions& openImageLibrary(const std::vector<std::string>& candidates) {
+  const SharedLibrary library =
+      SharedLibrary::open(candidates,
+                          "snell reads, writes and compares images through this module: build it "
+                          "(cmake --build build --target snell_image_library), or set "
+                          "SNELL_IMAGE_LIBRARY to its path.");
+  const auto entry = reinterpret_cast<SnellImageLibraryEntryPoint>(
+      library.symbol(SNELL_IMAGE_LIBRARY_ENTRY_POINT));
+  if (!entry)
+    throw SetupError(fmt::format("{} has no {}() entry point: it is not snell's image module",
+                                 library.fileName(), SNELL_IMAGE_LIBRARY_ENTRY_POINT));
+  const SnellImageLibraryFunctions* functions = entry();
+  if (!functions || functions->abi != SNELL_IMAGE_LIBRARY_ABI)
+    throw SetupError(fmt::format(
+        "{} speaks image module interface {}, this snell needs {}: rebuild snell_image_library",
+        library.fileName(), functions ? functions->abi : 0, SNELL_IMAGE_LIBRARY_ABI));
+  return *functions;
+}
+
+std::vector<std::string> imageLibraryCandidates() {
+  const char* override = std::getenv("SNELL_IMAGE_LIBRARY");
+  if (override && *override) return {override};
+  std::vector<std::string> candidates = {SNELL_IMAGE_LIBRARY_PATH};
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) candidates.push_back((executable.parent_path() / kFileName).string());
+  return candidates;
+}
+
+const SnellImageLibraryFunctions& imageLibrary() {
+  // A function-local static is initialised once, under a lock, and again on
+  // the next call if opening threw.
+  static const SnellImageLibraryFunctions& functions = openImageLibrary(imageLibraryCandidates());
+  return functions;
+}
+
+}  // namespace snell
