@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "edited_listing.h"
 #include "json_lines.h"
 
 namespace {
@@ -68,6 +69,22 @@ TEST(Cli, ListShowsTheFresnelCases) {
   EXPECT_EQ(o.code, 0);
   EXPECT_NE(o.out.find("orange-book/14.1-fresnel/sphere"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("orange-book/14.1-fresnel/sweep"), std::string::npos) << o.out;
+}
+
+TEST(Cli, ListCheckRefusesACaseThatRunWouldRefuse) {
+  // A capture the oracle does not compute passes the manifest reader; only
+  // the checks `run` makes first (and `list --check`) refuse it.
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-check-{}", ::getpid());
+  fs::create_directories(dir);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", dir / "fresnel",
+           fs::copy_options::recursive);
+  snell::edited::replaceInFile(dir / "fresnel" / "manifest.toml", "\"Reflect\"",
+                               "\"NoSuchOutput\"");
+  EXPECT_EQ(snell(fmt::format("list --shaders {}", dir.string())).code, 0);
+  const Outcome checked = snell(fmt::format("list --check --shaders {}", dir.string()));
+  EXPECT_EQ(checked.code, 2) << checked.out;
+  EXPECT_NE(checked.out.find("NoSuchOutput"), std::string::npos) << checked.out;
+  fs::remove_all(dir);
 }
 
 TEST(Cli, BrokenManifestIsExit2NamingTheFile) {
