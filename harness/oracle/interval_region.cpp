@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "oracle/fp32.h"
+#include "oracle/fp32_bits.h"
 
 namespace snell {
 namespace {
@@ -24,7 +24,7 @@ double termRoundingOf(const IntervalRegion& r) {
   const int roundings = nonNegative(r.factors - 1 - r.exactFactors);
   if (roundings == 0) return 0.0;
   const double before = gammaBound(roundings - 1) * r.mag;
-  return up(before + gapAbove(up(r.mag + before)));
+  return up(before + fp32_bits::gapAbove(up(r.mag + before)));
 }
 
 double termFlushOf(const IntervalRegion& r) {
@@ -99,7 +99,7 @@ double pendingError(const IntervalRegion& r, PrecisionRules rules) {
   const int k = nonNegative(r.terms - 2);
   const double terms = r.termRounding + r.termFlush;
   const double partial = up(up(r.mag + terms) * (1.0 + gammaBound(k)));
-  return up(terms + k * (gapAbove(partial) + kFlushError) + propagated);
+  return up(terms + k * (fp32_bits::gapAbove(partial) + kFlushError) + propagated);
 }
 
 bool mayOverflowInside(const IntervalRegion& r) {
