@@ -7,6 +7,7 @@
 
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
+#include "oracle/interval_region_bounds.h"
 
 namespace snell {
 namespace {

@@ -9,6 +9,7 @@
 
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
+#include "oracle/interval_region_bounds.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
