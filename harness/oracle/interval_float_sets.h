@@ -107,6 +107,14 @@ inline Range exactSumRange(double alo, double ahi, double blo, double bhi) {
 }
 
 inline Range exactProductRange(double alo, double ahi, double blo, double bhi) {
+  // Two points (the same bits, so the same signed zero) give four copies of
+  // one product: one is enough, and the result is the same.
+  if (fp32_bits::bitsOf(alo) == fp32_bits::bitsOf(ahi) &&
+      fp32_bits::bitsOf(blo) == fp32_bits::bitsOf(bhi)) {
+    const detail::Exact p = detail::exactProduct(alo, blo);
+    if (std::isnan(p.value)) return {detail::kNaN, detail::kNaN};
+    return {detail::doubleBelow(p), detail::doubleAbove(p)};
+  }
   const detail::Exact products[4] = {detail::exactProduct(alo, blo), detail::exactProduct(alo, bhi),
                                      detail::exactProduct(ahi, blo),
                                      detail::exactProduct(ahi, bhi)};
