@@ -1,10 +1,17 @@
 // What the oracle costs per case: Listing 14.1's vertex oracle (double,
-// float and fp32 intervals together) over the sphere scene, and the CPU
-// reference image of the same scene.
+// float and fp32 intervals together) over the sphere scene, the CPU
+// reference image of the same scene, and the reflect() and refract()
+// intervals alone (the built-ins every listing calls), under each API's
+// precision rules.
 // Run: build/bench/snell_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <random>
+#include <vector>
+
 #include "fresnel_inputs.h"
+#include "oracle/glsl/glsl.h"
 #include "oracle/reference/reference_image.h"
 #include "oracle/vertex_oracle.h"
 
@@ -29,6 +36,60 @@ void referenceImageOfSphere(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * in.scene.width * in.scene.height);
 }
 BENCHMARK(referenceImageOfSphere)->Unit(benchmark::kMillisecond);
+
+// Unit incident and normal vectors as a shader gets them (fp32), in a fixed
+// pseudo-random sequence, with incidence angles over the whole range (near
+// grazing, and near the critical angle for eta = 0.66, included).
+struct UnitPairs {
+  std::vector<glsl::vec3<Interval>> incident;
+  std::vector<glsl::vec3<Interval>> normal;
+  explicit UnitPairs(std::size_t count) {
+    std::mt19937 rng(13);
+    std::normal_distribution<double> gauss;
+    const auto unit = [&] {
+      double x = gauss(rng), y = gauss(rng), z = gauss(rng);
+      const double n = std::sqrt(x * x + y * y + z * z);
+      return glsl::vec3<Interval>(Interval::point(static_cast<float>(x / n)),
+                                  Interval::point(static_cast<float>(y / n)),
+                                  Interval::point(static_cast<float>(z / n)));
+    };
+    for (std::size_t i = 0; i < count; ++i) {
+      incident.push_back(unit());
+      normal.push_back(unit());
+    }
+  }
+};
+
+PrecisionRules rulesOf(const benchmark::State& state) {
+  return state.range(0) == 0 ? PrecisionRules::Glsl : PrecisionRules::Vulkan;
+}
+
+void reflectInterval(benchmark::State& state) {
+  const UsePrecisionRules rules(rulesOf(state));
+  const UnitPairs pairs(1024);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(glsl::reflect(pairs.incident[i], pairs.normal[i]));
+    i = (i + 1) % pairs.incident.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(precisionRulesName(rulesOf(state)));
+}
+BENCHMARK(reflectInterval)->Arg(0)->Arg(1);
+
+void refractInterval(benchmark::State& state) {
+  const UsePrecisionRules rules(rulesOf(state));
+  const UnitPairs pairs(1024);
+  const Interval eta = Interval::literal(0.66);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(glsl::refract(pairs.incident[i], pairs.normal[i], eta));
+    i = (i + 1) % pairs.incident.size();
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.SetLabel(precisionRulesName(rulesOf(state)));
+}
+BENCHMARK(refractInterval)->Arg(0)->Arg(1);
 
 }  // namespace
 }  // namespace snell

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
+#include "oracle/interval_region_bounds.h"
 
 namespace snell {
 namespace {
@@ -16,17 +18,41 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double maxAbs(double lo, double hi) { return std::max(std::fabs(lo), std::fabs(hi)); }
 
-bool isExactPowerOfTwo(double x) {
-  if (x == 0.0 || !std::isfinite(x)) return false;
-  int exponent = 0;
-  return std::fabs(std::frexp(x, &exponent)) == 0.5;
-}
+bool isExactPowerOfTwo(double x) { return fp32_bits::isPositivePowerOfTwo(std::fabs(x)); }
 
-bool exactPowerOfTwoLiteral(const Interval& v);
+// Whether `v` is a literal +-2^n, given the error it has when closed.
+bool exactPowerOfTwoLiteral(const Interval& v, double err) {
+  return v.constant && v.lo == v.hi && err == 0.0 && isExactPowerOfTwo(v.lo);
+}
 
 // The region of a closed value: a leaf with its error.
 IntervalRegion closedRegion(const Interval& v) {
-  return leafRegion(maxAbs(v.idealLo, v.idealHi), v.err, exactPowerOfTwoLiteral(v));
+  return leafRegion(maxAbs(v.idealLo, v.idealHi), v.err, exactPowerOfTwoLiteral(v, v.err));
+}
+
+// What closedView(v) changes, without copying the rest of v: its ideal
+// range and error (under the GLSL rules a float set narrower than the ideal
+// range widened by the error stands for the value, exactly), and its region.
+struct ClosedParts {
+  double idealLo;
+  double idealHi;
+  double err;
+  IntervalRegion region;
+};
+
+ClosedParts closedParts(const Interval& v, PrecisionRules rules) {
+  const bool setIsTighter = rules == PrecisionRules::Glsl && std::isfinite(v.lo) &&
+                            std::isfinite(v.hi) &&
+                            v.hi - v.lo <= (v.idealHi - v.idealLo) + 2.0 * v.err;
+  ClosedParts parts{v.idealLo, v.idealHi, v.err, {}};
+  if (setIsTighter) {
+    parts.idealLo = v.lo;
+    parts.idealHi = v.hi;
+    parts.err = 0.0;
+  }
+  parts.region = leafRegion(maxAbs(parts.idealLo, parts.idealHi), parts.err,
+                            exactPowerOfTwoLiteral(v, parts.err));
+  return parts;
 }
 
 // A constant expression's result may also be the compiler's own folding of
@@ -52,10 +78,6 @@ Interval withFold(Interval r, double folded) {
   return r;
 }
 
-bool exactPowerOfTwoLiteral(const Interval& v) {
-  return v.constant && v.lo == v.hi && v.err == 0.0 && isExactPowerOfTwo(v.lo);
-}
-
 // Bounds past the float range: a result there may be the largest float or
 // an infinity, so its distance from the ideal value has no bound.
 double errUnlessOverflowed(double idealLo, double idealHi, double err) {
@@ -77,15 +99,18 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
   const bool overBudget =
       op == RegionOp::Multiply && rules == PrecisionRules::Vulkan &&
       static_cast<double>(a.region.terms) * b.region.terms > kVulkanDistributionTerms;
-  const auto operand = [&](const Interval& v) {
-    const bool open = v.region.kind != IntervalRegion::Kind::Leaf &&
-                      !(op == RegionOp::Multiply && rules == PrecisionRules::Glsl &&
-                        v.region.kind == IntervalRegion::Kind::Sum) &&
-                      !(overBudget && v.region.terms > 1);
-    return open ? v : closedView(v);
+  const auto isOpen = [&](const Interval& v) {
+    return v.region.kind != IntervalRegion::Kind::Leaf &&
+           !(op == RegionOp::Multiply && rules == PrecisionRules::Glsl &&
+             v.region.kind == IntervalRegion::Kind::Sum) &&
+           !(overBudget && v.region.terms > 1);
   };
-  const Interval av = operand(a);
-  const Interval bv = operand(b);
+  // The operands' ideal ranges and regions, open or closed (closedView).
+  const auto parts = [&](const Interval& v) {
+    return isOpen(v) ? ClosedParts{v.idealLo, v.idealHi, v.err, v.region} : closedParts(v, rules);
+  };
+  const ClosedParts av = parts(a);
+  const ClosedParts bv = parts(b);
   const IntervalRegion& ra = av.region;
   const IntervalRegion& rb = bv.region;
   Interval r;
@@ -191,7 +216,7 @@ Interval operator/(const Interval& aIn, const Interval& bIn) {
   const double propagated =
       (a.err * maxAbs(b.idealLo, b.idealHi) + maxAbs(a.idealLo, a.idealHi) * b.err) /
       (smallest * idealSmallest);
-  const double own = 2.5 * gapAbove(maxAbs(quotients.lo, quotients.hi)) +
+  const double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients.lo, quotients.hi)) +
                      float_sets::flushError(quotients.lo, quotients.hi);
   Interval r = leafValue(set.lo, set.hi, ideal.lo, ideal.hi, float_sets::up(propagated + own));
   if (aIn.constant && bIn.constant) return withFold(r, aIn.folded / bIn.folded);
@@ -250,17 +275,12 @@ Interval leafValue(double lo, double hi, double idealLo, double idealHi, double 
 
 Interval closedView(const Interval& value) {
   if (value.undefined) return value;
+  const ClosedParts parts = closedParts(value, currentPrecisionRules());
   Interval r = value;
-  const bool setIsTighter =
-      currentPrecisionRules() == PrecisionRules::Glsl && std::isfinite(value.lo) &&
-      std::isfinite(value.hi) &&
-      value.hi - value.lo <= (value.idealHi - value.idealLo) + 2.0 * value.err;
-  if (setIsTighter) {
-    r.idealLo = value.lo;
-    r.idealHi = value.hi;
-    r.err = 0.0;
-  }
-  r.region = closedRegion(r);
+  r.idealLo = parts.idealLo;
+  r.idealHi = parts.idealHi;
+  r.err = parts.err;
+  r.region = parts.region;
   return r;
 }
 

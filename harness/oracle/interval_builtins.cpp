@@ -1,12 +1,15 @@
 #include "oracle/interval_builtins.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
+#include "oracle/interval_region_bounds.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -65,7 +68,7 @@ Interval inversesqrt(const Interval& xIn) {
   // argument; then 2 ULP of its own at the computed value.
   const double m = smallestArgument(x);
   const double propagated = x.err / (2.0 * m * std::sqrt(m));
-  const double own = 2.0 * gapAbove(above(1.0 / std::sqrt(x.lo)));
+  const double own = 2.0 * fp32_bits::gapAbove(above(1.0 / std::sqrt(x.lo)));
   const Interval r = leafValue(set.lo, set.hi, below(1.0 / std::sqrt(x.idealHi)),
                                above(1.0 / std::sqrt(x.idealLo)), up(up(propagated) + own));
   return folded(r, x, inverseSqrtOf);
@@ -97,7 +100,7 @@ Interval sqrt(const Interval& xIn) {
   // 0 the result is exactly 0).
   const double sMax = above(std::sqrt(x.hi));
   const double delta = 0x1p-22;
-  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * gapAbove(root.hi) +
+  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * fp32_bits::gapAbove(root.hi) +
                         float_sets::flushError(lo, root.hi));
   const Interval r =
       leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
@@ -113,7 +116,7 @@ Interval exp2(const Interval& xIn) {
       float_sets::withinUlps(below(std::exp2(x.lo)), above(std::exp2(x.hi)), ulps);
   const double top = above(std::exp2(std::max(x.hi, x.idealHi + x.err)));
   const double propagated = top * kLn2 * x.err;
-  const double own = ulps * gapAbove(top) + float_sets::flushError(set.lo, set.hi);
+  const double own = ulps * fp32_bits::gapAbove(top) + float_sets::flushError(set.lo, set.hi);
   const Interval r = leafValue(set.lo, set.hi, below(std::exp2(x.idealLo)),
                                above(std::exp2(x.idealHi)), up(up(propagated) + own));
   return folded(r, x, exp2Of);
@@ -127,7 +130,7 @@ Interval exp(const Interval& xIn) {
       float_sets::withinUlps(below(std::exp(x.lo)), above(std::exp(x.hi)), ulps);
   const double top = above(std::exp(std::max(x.hi, x.idealHi + x.err)));
   const double propagated = top * x.err;
-  const double own = ulps * gapAbove(top) + float_sets::flushError(set.lo, set.hi);
+  const double own = ulps * fp32_bits::gapAbove(top) + float_sets::flushError(set.lo, set.hi);
   const Interval r = leafValue(set.lo, set.hi, below(std::exp(x.idealLo)),
                                above(std::exp(x.idealHi)), up(up(propagated) + own));
   return folded(r, x, expOf);
@@ -154,7 +157,7 @@ Interval log2(const Interval& xIn) {
   const double m = smallestArgument(x);
   const double propagated = x.err / (kLn2 * m);
   const double own =
-      std::max(3.0 * gapAbove(std::max(std::fabs(set.lo), std::fabs(set.hi))), 0x1p-21);
+      std::max(3.0 * fp32_bits::gapAbove(std::max(std::fabs(set.lo), std::fabs(set.hi))), 0x1p-21);
   const Interval r = leafValue(set.lo, set.hi, below(std::log2(x.idealLo)),
                                above(std::log2(x.idealHi)), up(up(propagated) + own));
   return folded(r, x, log2Of);
@@ -204,7 +207,7 @@ namespace {
 // sum before the last one happen at partial sums of subsets of the terms;
 // the largest total over every tree shape bounds them all. `partial[mask]`
 // bounds |partial sum| over the terms in the mask.
-double worstTreeRounding(const std::vector<double>& partial, std::size_t n) {
+double worstTreeRounding(const double* partial, std::size_t n) {
   const auto err = [&](unsigned mask) {
     return float_sets::roundingError(-partial[mask], partial[mask]);
   };
@@ -212,10 +215,11 @@ double worstTreeRounding(const std::vector<double>& partial, std::size_t n) {
   if (n == 3) return std::max({err(0b011), err(0b101), err(0b110)});
   // n == 4: a pair inside a triple, or two disjoint pairs.
   double worst = 0.0;
+  // The masks of two terms out of four, in increasing order.
+  constexpr unsigned kPairs[] = {0b0011u, 0b0101u, 0b0110u, 0b1001u, 0b1010u, 0b1100u};
   for (unsigned triple : {0b0111u, 0b1011u, 0b1101u, 0b1110u})
-    for (unsigned pair = 1; pair < 16; ++pair)
-      if ((pair & triple) == pair && __builtin_popcount(pair) == 2)
-        worst = std::max(worst, err(pair) + err(triple));
+    for (unsigned pair : kPairs)
+      if ((pair & triple) == pair) worst = std::max(worst, err(pair) + err(triple));
   for (unsigned pair : {0b0011u, 0b0101u, 0b1001u})
     worst = std::max(worst, err(pair) + err(0b1111u ^ pair));
   return worst;
@@ -226,9 +230,14 @@ double worstTreeRounding(const std::vector<double>& partial, std::size_t n) {
 Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b) {
   assert(a.size() == b.size() && !a.empty());
   const std::size_t n = a.size();
-  std::vector<Interval> products;
-  products.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) products.push_back(a[i] * b[i]);
+  // A vector's dot product or a matrix row has at most four terms: those
+  // stay off the heap.
+  std::array<Interval, 4> inlineProducts;
+  std::vector<Interval> heapProducts;
+  if (n > inlineProducts.size()) heapProducts.resize(n);
+  Interval* const products =
+      n > inlineProducts.size() ? heapProducts.data() : inlineProducts.data();
+  for (std::size_t i = 0; i < n; ++i) products[i] = a[i] * b[i];
   Interval sum = products[0];
   for (std::size_t i = 1; i < n; ++i) sum = sum + products[i];
   if (sum.undefined || n < 3 || n > 4) return sum;
@@ -239,7 +248,7 @@ Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b)
     if (a[i].region.kind != IntervalRegion::Kind::Leaf ||
         b[i].region.kind != IntervalRegion::Kind::Leaf)
       return sum;
-  std::vector<double> termError(n);
+  std::array<double, 4> termError{};
   for (std::size_t i = 0; i < n; ++i) {
     const Interval& p = products[i];
     // Its operands' errors, then its one rounding (or none, fused).
@@ -247,8 +256,9 @@ Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b)
     termError[i] =
         up(propagated + float_sets::roundingError(p.idealLo - propagated, p.idealHi + propagated));
   }
-  std::vector<double> partial(std::size_t{1} << n, 0.0);
-  for (unsigned mask = 1; mask < partial.size(); ++mask) {
+  std::array<double, 16> partial{};
+  const unsigned masks = 1u << n;
+  for (unsigned mask = 1; mask < masks; ++mask) {
     double lo = 0.0, hi = 0.0, error = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
       if (!(mask & (1u << i))) continue;
@@ -260,8 +270,8 @@ Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b)
     partial[mask] = up((std::max(std::fabs(lo), std::fabs(hi)) + error) * (1.0 + 0x1p-21));
   }
   double pending = 0.0;
-  for (double e : termError) pending += e;
-  pending = up(pending + worstTreeRounding(partial, n));
+  for (std::size_t i = 0; i < n; ++i) pending += termError[i];
+  pending = up(pending + worstTreeRounding(partial.data(), n));
   if (!(pending < sum.err)) return sum;
   float_sets::Range set = float_sets::roundedAround({sum.idealLo, sum.idealHi}, pending);
   set = float_sets::admitFlushToZero(set);

@@ -62,24 +62,8 @@ inline constexpr int kVulkanDistributionTerms = 8;
 inline constexpr double kUnitRoundoff = 0x1p-23;
 inline constexpr double kFlushError = 0x1p-126;
 
-// gamma(k) = k u / (1 - k u), rounded up.
-double gammaBound(int k);
-
-// A closed value: its ideal magnitude and its error bound. `exactPowerOfTwo`
-// for a literal +-2^n, which multiplies without rounding.
-IntervalRegion leafRegion(double maxAbsIdeal, double err, bool exactPowerOfTwo);
-
-// The region of a + b (or a - b) and of a * b. Under the GLSL rules the
-// caller closes a sum before it becomes a factor (no distributivity).
-IntervalRegion sumRegion(const IntervalRegion& a, const IntervalRegion& b);
-IntervalRegion productRegion(const IntervalRegion& a, const IntervalRegion& b);
-
-// Bound on |value before its last rounding - ideal| for every regrouping
-// `rules` allow. A leaf has no pending rounding: its bound is its error.
-double pendingError(const IntervalRegion& region, PrecisionRules rules);
-
-// Whether some regrouping may overflow a partial result before the last
-// operation (an overflowing last result is the float set's business).
-bool mayOverflowInside(const IntervalRegion& region);
+// The bounds themselves (gamma(k), the region of a + b and a * b, the
+// pending error) are in interval_region_bounds.h, inline for the oracle's
+// own + and *.
 
 }  // namespace snell

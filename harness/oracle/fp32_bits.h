@@ -1,0 +1,117 @@
+#pragma once
+// The fp32 grid functions of fp32.h, computed on the IEEE 754 encodings
+// (std::bit_cast) instead of through libm's nextafter, frexp and ldexp:
+// every interval operation calls several of them, and they are most of the
+// oracle's time when they are calls into libm. Each gives bit for bit what
+// its libm formulation gives (tests/oracle/fp32_bits_test.cpp checks them
+// against it on random and edge inputs).
+//
+// Internal to the oracle library: included by its .cpp files only, which
+// are compiled without GCC's SLP vectorizer (floatAtOrBelow/Above round a
+// double to float and back, which GCC 12.2's SLP vectorizer can drop; see
+// harness/oracle/CMakeLists.txt).
+#include <bit>
+#include <cstdint>
+#include <limits>
+
+#include "oracle/fp32.h"
+
+namespace snell::fp32_bits {
+
+inline constexpr std::uint64_t kDoubleSignBit = std::uint64_t{1} << 63;
+inline constexpr std::uint64_t kDoubleMantissa = (std::uint64_t{1} << 52) - 1;
+
+inline std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
+inline double doubleOf(std::uint64_t bits) { return std::bit_cast<double>(bits); }
+
+// The biased exponent field: 0 for zeros and denormals, 2047 for inf/NaN.
+inline int biasedExponent(double x) { return static_cast<int>((bitsOf(x) >> 52) & 0x7ff); }
+
+// std::nextafter(x, +inf) and std::nextafter(x, -inf) for doubles (glibc's
+// results, -0 included: the step up from the smallest negative denormal is
+// -0).
+inline double nextUp(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity()) return x;
+  if (x == 0.0) return std::numeric_limits<double>::denorm_min();
+  const std::uint64_t bits = bitsOf(x);
+  return doubleOf(x > 0.0 ? bits + 1 : bits - 1);
+}
+inline double nextDown(double x) {
+  if (x != x || x == -std::numeric_limits<double>::infinity()) return x;
+  if (x == 0.0) return -std::numeric_limits<double>::denorm_min();
+  const std::uint64_t bits = bitsOf(x);
+  return doubleOf(x > 0.0 ? bits - 1 : bits + 1);
+}
+
+// The same for a float that is not NaN (what std::nextafter(f, +-inf) gives).
+inline float nextUpFloat(float f) {
+  if (f == std::numeric_limits<float>::infinity()) return f;
+  if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0.0f ? bits + 1 : bits - 1);
+}
+inline float nextDownFloat(float f) {
+  if (f == -std::numeric_limits<float>::infinity()) return f;
+  if (f == 0.0f) return -std::numeric_limits<float>::denorm_min();
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0.0f ? bits - 1 : bits + 1);
+}
+
+// x > 0 and an exact power of two (denormal doubles included), as
+// `std::frexp(x, &e) == 0.5`.
+inline bool isPositivePowerOfTwo(double x) {
+  if (!(x > 0.0) || x == std::numeric_limits<double>::infinity()) return false;
+  const std::uint64_t mantissa = bitsOf(x) & kDoubleMantissa;
+  if (biasedExponent(x) != 0) return mantissa == 0;
+  return (mantissa & (mantissa - 1)) == 0;
+}
+
+// 2^(e + 1) for the binade [2^e, 2^(e + 1)) holding a normal x > 0: the
+// first power of two above x, as std::ldexp(1.0, exponent) after
+// std::frexp(x, &exponent) (infinity past the double range).
+inline double powerOfTwoAbove(double x) {
+  return doubleOf(static_cast<std::uint64_t>(biasedExponent(x) + 1) << 52);
+}
+
+inline double gapAbove(double x) {
+  const double a = x < 0.0 ? -x : x;
+  if (a != a) return a;
+  if (a < kFp32MinNormal) return kFp32MinDenormal;
+  if (a > kFp32Max) return 0x1p104;
+  // a = 1.m * 2^(E - 1023), and the float gap in that binade is
+  // 2^(E - 1023 - 23): the exponent field E - 23 with a zero mantissa.
+  return doubleOf(static_cast<std::uint64_t>(biasedExponent(a) - 23) << 52);
+}
+
+inline double ulp(double x) {
+  const double gap = gapAbove(x);
+  const double a = x < 0.0 ? -x : x;
+  const bool powerOfTwo = a > kFp32MinNormal && a <= kFp32Max && (bitsOf(a) & kDoubleMantissa) == 0;
+  return powerOfTwo ? gap * 0.5 : gap;
+}
+
+inline double floatAtOrBelow(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity() ||
+      x == -std::numeric_limits<double>::infinity())
+    return x;
+  // Outside the float range the cast is not defined by the language.
+  if (x > kFp32Max) return kFp32Max;
+  if (x < -kFp32Max) return -std::numeric_limits<double>::infinity();
+  // The cast rounds to nearest: at most one float away from the answer.
+  const float nearest = static_cast<float>(x);
+  if (static_cast<double>(nearest) <= x) return nearest;
+  return nextDownFloat(nearest);
+}
+
+inline double floatAtOrAbove(double x) {
+  if (x != x || x == std::numeric_limits<double>::infinity() ||
+      x == -std::numeric_limits<double>::infinity())
+    return x;
+  if (x > kFp32Max) return std::numeric_limits<double>::infinity();
+  if (x < -kFp32Max) return -kFp32Max;
+  const float nearest = static_cast<float>(x);
+  if (static_cast<double>(nearest) >= x) return nearest;
+  return nextUpFloat(nearest);
+}
+
+}  // namespace snell::fp32_bits
