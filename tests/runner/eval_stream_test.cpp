@@ -21,7 +21,7 @@ struct EvalRun {
 };
 
 EvalRun evaluate(const std::string& input, std::size_t chunkLines, unsigned threads,
-             Backend* backend = nullptr, PrecisionRules rules = PrecisionRules::Glsl) {
+                 Backend* backend = nullptr, PrecisionRules rules = PrecisionRules::Glsl) {
   std::istringstream in(input);
   std::ostringstream out;
   EvalOptions options;
