@@ -1,15 +1,67 @@
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <charconv>
+#include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <string_view>
 
 #include "backends/backend.h"
 #include "backends/backend_registry.h"
 #include "cli/commands.h"
 #include "core/errors.h"
+#include "runner/block_pool.h"
 #include "runner/builtin_eval.h"
 
 namespace snell::cli {
+namespace {
+
+// A whole number of at least 1 from the environment (a tuning knob for
+// tests and benchmarks), or `fallback` when it is not set.
+std::size_t positiveFromEnvironment(const char* name, std::size_t fallback) {
+  const char* text = std::getenv(name);
+  if (!text || !*text) return fallback;
+  const std::string_view view(text);
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(view.data(), view.data() + view.size(), value);
+  if (error != std::errc() || end != view.data() + view.size() || value == 0)
+    throw UsageError(
+        fmt::format("{}={}: give a whole number of at least 1, or unset it", name, view));
+  return value;
+}
+
+// On a terminal only (never in CI logs): one line on stderr, rewritten
+// every second or so once a run has taken two seconds.
+class TerminalProgress {
+ public:
+  TerminalProgress() : on_(isatty(STDERR_FILENO)), start_(Clock::now()) {}
+  ~TerminalProgress() {
+    if (shown_) fmt::print(stderr, "\n");
+  }
+  TerminalProgress(const TerminalProgress&) = delete;
+  TerminalProgress& operator=(const TerminalProgress&) = delete;
+
+  void update(std::size_t lines) {
+    const auto now = Clock::now();
+    if (!on_ || now - start_ < std::chrono::seconds(2) || now - shownAt_ < std::chrono::seconds(1))
+      return;
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    fmt::print(stderr, "\rsnell eval: {} lines, {:.0f} lines/s ", lines, lines / seconds);
+    std::fflush(stderr);
+    shown_ = true;
+    shownAt_ = now;
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  bool on_;
+  bool shown_ = false;
+  Clock::time_point start_, shownAt_;
+};
+
+}  // namespace
 
 Command addEvalCommand(CLI::App& app) {
   CLI::App* eval = app.add_subcommand(
@@ -56,7 +108,9 @@ On gl and vk also exact, within_spec and slack.
 Physics lines, answered in double by the physics reference (--backend oracle only):
 {"fn":"fresnel","model":"exact"|"schlick"|"schlick_dense_side","cos_i":0.8,"n1":1,"n2":1.5},
 {"fn":"ior","glass":"N-BK7"|"water","lambda_nm":589.3}, {"fn":"critical_angle","n1":1.5,"n2":1}
-and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "value".)");
+and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "value".
+Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on every core
+(SNELL_EVAL_THREADS); the answers do not depend on either.)");
   return [options] {
     // Standard input read through C stdio, one character per call, was the
     // largest cost after start-up in a profile of a million lines; this
@@ -81,10 +135,19 @@ and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "
       backend = makeBackend(options->backend, backendOptions);
       rules = precisionRulesForApi(backend->driverInfo().api);
     }
-    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules);
+    EvalOptions evalOptions;
+    evalOptions.chunkLines = positiveFromEnvironment("SNELL_EVAL_CHUNK", evalOptions.chunkLines);
+    evalOptions.threads =
+        static_cast<unsigned>(positiveFromEnvironment("SNELL_EVAL_THREADS", defaultEvalThreads()));
+    TerminalProgress progress;
+    evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
+    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
     if (summary.malformed) {
+      const std::string where = options->input == "-" ? "standard input" : options->input;
+      fmt::print(stderr, "snell eval: {}:{}: {}\n", options->input == "-" ? "<stdin>" : where,
+                 summary.firstMalformedLine, summary.firstMalformedReason);
       fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
-                 summary.malformed, options->input == "-" ? "standard input" : options->input);
+                 summary.malformed, where);
       return 2;
     }
     return summary.outsideSpec ? 1 : 0;

@@ -3,17 +3,20 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "compare/slack.h"
 #include "core/errors.h"
 #include "oracle/builtin_probe.h"
+#include "runner/block_pool.h"
+#include "runner/eval_answer_text.h"
 #include "runner/eval_line.h"
+#include "runner/eval_line_fast.h"
+#include "runner/line_chunks.h"
 #include "runner/physics_eval_line.h"
 #include "runner/probe_shader.h"
 
@@ -22,32 +25,86 @@ namespace {
 
 using nlohmann::json;
 
-constexpr std::size_t kBatchLines = 8192;
+// Lines a thread takes at a time: small enough that two threads finish a
+// chunk together, large enough that taking one costs nothing.
+constexpr std::size_t kBlockLines = 256;
 
 struct Line {
   std::size_t number = 0;
-  std::optional<BuiltinCall> call;  // empty when malformed or a physics line
+  bool blank = false;
+  std::optional<BuiltinCall> call;  // empty when blank, malformed or a physics line
   std::optional<json> physics;      // a physics line's answer
-  std::string error;
+  std::string error;                // why it is malformed
   std::optional<BuiltinResult> oracle;
   std::vector<float> driver;
 };
 
-json finite(const std::vector<double>& values) {
-  json out = json::array();
-  for (double x : values)
-    out.push_back(std::isfinite(x) ? json(x) : json(x > 0 ? "inf" : x < 0 ? "-inf" : "nan"));
-  return out;
+// What one block of lines added to the summary; summed in block order, so
+// the first malformed line is the same whichever thread ran which block.
+struct BlockOutput {
+  fmt::memory_buffer text;
+  EvalSummary summary;
+};
+
+void parseLine(Line& line, std::string_view text, bool onDriver) {
+  if (text.find_first_not_of(" \t\r") == std::string_view::npos) {
+    line.blank = true;
+    return;
+  }
+  if (std::optional<BuiltinCall> call = parseCommonEvalLine(text)) {
+    line.call = std::move(call);
+    return;
+  }
+  try {
+    const json object = json::parse(text.begin(), text.end());
+    if (!isPhysicsCall(object)) {
+      line.call = parseEvalObject(object);
+    } else if (onDriver) {
+      throw UsageError(fmt::format(
+          "{} is answered by the physics reference, not by a driver: run it with --backend "
+          "oracle",
+          object.at("fn").get<std::string>()));
+    } else {
+      line.physics = evaluatePhysicsCall(object);
+    }
+  } catch (const json::exception& error) {
+    line.error = fmt::format("not valid JSON ({})", error.what());
+  } catch (const UsageError& error) {
+    line.error = error.what();
+  }
 }
 
-json wayJson(const BuiltinWay& way) {
-  json out = {{"value", finite(way.value)}, {"lo", finite(way.lo)}, {"hi", finite(way.hi)}};
-  if (std::find(way.undefined.begin(), way.undefined.end(), true) != way.undefined.end())
-    out["undefined"] = way.undefined;
-  return out;
+// Writes the line's answer (none for a blank line) and counts it.
+void answerLine(const Line& line, const BuiltinResult* oracle, bool onDriver, PrecisionRules rules,
+                BlockOutput& block) {
+  if (line.blank) return;
+  EvalSummary& summary = block.summary;
+  if (line.physics) {
+    ++summary.answered;
+    json out = {{"line", line.number}};
+    out.update(*line.physics);
+    block.text.append(out.dump());
+    block.text.push_back('\n');
+    return;
+  }
+  if (!line.call) {
+    if (!summary.malformed++) {
+      summary.firstMalformedLine = line.number;
+      summary.firstMalformedReason = line.error;
+    }
+    const json out = {{"line", line.number},
+                      {"error", fmt::format("line {}: {}", line.number, line.error)}};
+    block.text.append(out.dump());
+    block.text.push_back('\n');
+    return;
+  }
+  ++summary.answered;
+  const EvalAnswer answer{line.number, &*line.call, oracle, onDriver ? &line.driver : nullptr,
+                          rules};
+  if (appendEvalAnswer(block.text, answer)) ++summary.outsideSpec;
 }
 
-// One draw for all lines of the batch that share a function and a width.
+// One draw for all lines of the chunk that share a function and a width.
 void runOnDriver(std::vector<Line>& lines, Backend& backend) {
   std::map<std::pair<std::string, int>, std::vector<Line*>> groups;
   for (Line& line : lines)
@@ -59,13 +116,16 @@ void runOnDriver(std::vector<Line>& lines, Backend& backend) {
     job.varyings = {"R"};
     job.vertexCount = members.size();
     AttributeStream I{"I", width, {}}, N{"N", width, {}}, eta{"eta", 1, {}};
+    I.data.reserve(members.size() * static_cast<std::size_t>(width));
+    N.data.reserve(members.size() * static_cast<std::size_t>(width));
+    eta.data.reserve(members.size());
     for (const Line* line : members) {
       I.data.insert(I.data.end(), line->call->I.begin(), line->call->I.end());
       N.data.insert(N.data.end(), line->call->N.begin(), line->call->N.end());
       eta.data.push_back(line->call->eta);
     }
-    job.attributes = {{"I", I}, {"N", N}};
-    if (fn == "refract") job.attributes["eta"] = eta;
+    job.attributes = {{"I", std::move(I)}, {"N", std::move(N)}};
+    if (fn == "refract") job.attributes["eta"] = std::move(eta);
     const CaptureOutcome outcome = backend.captureVertexOutputs(job);
     if (!outcome.compile.ok)
       throw SetupError(fmt::format("the {} probe shader did not compile on {}: {}", fn,
@@ -76,57 +136,14 @@ void runOnDriver(std::vector<Line>& lines, Backend& backend) {
   }
 }
 
-json answer(const Line& line, bool onDriver, PrecisionRules rules, EvalSummary& summary) {
-  if (line.physics) {
-    ++summary.answered;
-    json out = {{"line", line.number}};
-    out.update(*line.physics);
-    return out;
+void addBlock(EvalSummary& total, const EvalSummary& block) {
+  if (block.malformed && !total.malformed) {
+    total.firstMalformedLine = block.firstMalformedLine;
+    total.firstMalformedReason = block.firstMalformedReason;
   }
-  if (!line.call) {
-    ++summary.malformed;
-    return {{"line", line.number}, {"error", line.error}};
-  }
-  ++summary.answered;
-  const BuiltinResult& oracle = *line.oracle;
-  json out = {{"line", line.number}, {"fn", line.call->fn}, {"rules", precisionRulesName(rules)}};
-  if (!onDriver) {
-    out["value"] = finite(oracle.value);
-  } else {
-    // Judged as a whole vector against the way it fits (or comes nearest).
-    const bool within = oracle.allows(line.driver);
-    const BuiltinWay& way = oracle.nearestWay(line.driver);
-    double worst = 0;
-    for (std::size_t c = 0; c < line.driver.size(); ++c)
-      if (!way.undefined[c])
-        worst = std::max(worst, slack(line.driver[c], way.value[c], way.lo[c], way.hi[c]));
-    if (!within) ++summary.outsideSpec;
-    out["value"] = finite(std::vector<double>(line.driver.begin(), line.driver.end()));
-    out["exact"] = finite(oracle.value);
-    out["within_spec"] = within;
-    out["slack"] = std::isfinite(worst) ? json(worst) : json("inf");
-  }
-  out["lo"] = finite(oracle.lo);
-  out["hi"] = finite(oracle.hi);
-  if (std::find(oracle.undefined.begin(), oracle.undefined.end(), true) != oracle.undefined.end())
-    out["undefined"] = oracle.undefined;
-  if (oracle.ways.size() > 1) {
-    json ways = json::array();
-    for (const BuiltinWay& w : oracle.ways) ways.push_back(wayJson(w));
-    out["alternatives"] = ways;
-  }
-  return out;
-}
-
-void flushBatch(std::vector<Line>& lines, std::ostream& out, Backend* backend, PrecisionRules rules,
-                EvalSummary& summary) {
-  for (Line& line : lines)
-    if (line.call) line.oracle = evaluateBuiltin(*line.call, rules);
-  if (backend) runOnDriver(lines, *backend);
-  for (const Line& line : lines)
-    out << answer(line, backend != nullptr, rules, summary).dump() << '\n';
-  out.flush();
-  lines.clear();
+  total.answered += block.answered;
+  total.malformed += block.malformed;
+  total.outsideSpec += block.outsideSpec;
 }
 
 }  // namespace
@@ -136,37 +153,75 @@ PrecisionRules precisionRulesForApi(const std::string& api) {
 }
 
 EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
-                          PrecisionRules rules) {
+                          PrecisionRules rules, const EvalOptions& options) {
   EvalSummary summary;
-  std::vector<Line> batch;
-  std::string text;
-  std::size_t number = 0;
-  while (std::getline(in, text)) {
-    ++number;
-    if (text.find_first_not_of(" \t\r") == std::string::npos) continue;
-    Line line;
-    line.number = number;
-    try {
-      const json object = json::parse(text);
-      if (!isPhysicsCall(object)) {
-        line.call = parseEvalObject(object);
-      } else if (backend) {
-        throw UsageError(fmt::format(
-            "{} is answered by the physics reference, not by a driver: run it with --backend "
-            "oracle",
-            object.at("fn").get<std::string>()));
-      } else {
-        line.physics = evaluatePhysicsCall(object);
-      }
-    } catch (const json::exception& error) {
-      line.error = fmt::format("line {}: not valid JSON ({})", number, error.what());
-    } catch (const UsageError& error) {
-      line.error = fmt::format("line {}: {}", number, error.what());
+  BlockPool pool(std::max(1u, options.threads));
+  LineChunks chunks(in);
+  std::vector<Line> lines;
+  std::vector<BlockOutput> blocks;
+  const bool onDriver = backend != nullptr;
+  std::size_t done = 0;
+  for (;;) {
+    const std::vector<std::string_view>& text =
+        chunks.next(std::max<std::size_t>(1, options.chunkLines));
+    if (text.empty()) break;
+    const std::size_t first = chunks.firstLineNumber();
+    lines.clear();
+    lines.resize(text.size());
+    const std::size_t blockCount = (text.size() + kBlockLines - 1) / kBlockLines;
+    blocks.resize(blockCount);
+    for (BlockOutput& block : blocks) {
+      block.text.clear();
+      block.summary = {};
     }
-    batch.push_back(std::move(line));
-    if (batch.size() == kBatchLines) flushBatch(batch, out, backend, rules, summary);
+    const auto blockOf = [&](std::size_t begin) -> BlockOutput& {
+      return blocks[begin / kBlockLines];
+    };
+    if (!onDriver) {
+      // Read, evaluate and answer each line in one pass: nothing waits on
+      // a draw, and no oracle result outlives its line.
+      pool.run(text.size(), kBlockLines, [&](std::size_t begin, std::size_t end) {
+        BlockOutput& block = blockOf(begin);
+        for (std::size_t k = begin; k < end; ++k) {
+          Line& line = lines[k];
+          line.number = first + k;
+          parseLine(line, text[k], false);
+          std::optional<BuiltinResult> oracle;
+          if (line.call) oracle = evaluateBuiltin(*line.call, rules);
+          answerLine(line, oracle ? &*oracle : nullptr, false, rules, block);
+          line = Line{};
+        }
+      });
+    } else {
+      pool.run(text.size(), kBlockLines, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k) {
+          lines[k].number = first + k;
+          parseLine(lines[k], text[k], true);
+        }
+      });
+      // The calling thread draws (a driver's context is bound to it) while
+      // the others start on the oracle; it joins them when the draw is done.
+      pool.run(
+          text.size(), kBlockLines,
+          [&](std::size_t begin, std::size_t end) {
+            for (std::size_t k = begin; k < end; ++k)
+              if (lines[k].call) lines[k].oracle = evaluateBuiltin(*lines[k].call, rules);
+          },
+          [&] { runOnDriver(lines, *backend); });
+      pool.run(text.size(), kBlockLines, [&](std::size_t begin, std::size_t end) {
+        BlockOutput& block = blockOf(begin);
+        for (std::size_t k = begin; k < end; ++k)
+          answerLine(lines[k], lines[k].oracle ? &*lines[k].oracle : nullptr, true, rules, block);
+      });
+    }
+    for (const BlockOutput& block : blocks) {
+      out.write(block.text.data(), static_cast<std::streamsize>(block.text.size()));
+      addBlock(summary, block.summary);
+    }
+    out.flush();
+    done += text.size();
+    if (options.progress) options.progress(done);
   }
-  flushBatch(batch, out, backend, rules, summary);
   return summary;
 }
 

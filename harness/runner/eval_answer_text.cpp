@@ -1,0 +1,125 @@
+#include "runner/eval_answer_text.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string_view>
+
+#include "compare/slack.h"
+
+namespace snell {
+namespace {
+
+void text(fmt::memory_buffer& out, std::string_view s) { out.append(s); }
+
+// A finite number as nlohmann's dump() writes it (its Grisu2 conversion:
+// not always the shortest digits, so fmt's would differ now and then), or
+// the string eval gives for a non-finite one.
+void number(fmt::memory_buffer& out, double x) {
+  if (!std::isfinite(x)) {
+    text(out, x > 0 ? "\"inf\"" : x < 0 ? "\"-inf\"" : "\"nan\"");
+    return;
+  }
+  std::array<char, 64> digits;
+  const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), x);
+  out.append(digits.data(), end);
+}
+
+template <class T>
+void numbers(fmt::memory_buffer& out, const std::vector<T>& values) {
+  out.push_back('[');
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k) out.push_back(',');
+    number(out, static_cast<double>(values[k]));
+  }
+  out.push_back(']');
+}
+
+void flags(fmt::memory_buffer& out, const std::vector<bool>& values) {
+  out.push_back('[');
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k) out.push_back(',');
+    text(out, values[k] ? "true" : "false");
+  }
+  out.push_back(']');
+}
+
+bool any(const std::vector<bool>& values) {
+  return std::find(values.begin(), values.end(), true) != values.end();
+}
+
+void way(fmt::memory_buffer& out, const BuiltinWay& w) {
+  text(out, "{\"hi\":");
+  numbers(out, w.hi);
+  text(out, ",\"lo\":");
+  numbers(out, w.lo);
+  if (any(w.undefined)) {
+    text(out, ",\"undefined\":");
+    flags(out, w.undefined);
+  }
+  text(out, ",\"value\":");
+  numbers(out, w.value);
+  out.push_back('}');
+}
+
+}  // namespace
+
+bool appendEvalAnswer(fmt::memory_buffer& out, const EvalAnswer& answer) {
+  const BuiltinResult& oracle = *answer.oracle;
+  // Keys in the order nlohmann's std::map kept them: alternatives, exact,
+  // fn, hi, line, lo, rules, slack, undefined, value, within_spec.
+  out.push_back('{');
+  if (oracle.ways.size() > 1) {
+    text(out, "\"alternatives\":[");
+    for (std::size_t k = 0; k < oracle.ways.size(); ++k) {
+      if (k) out.push_back(',');
+      way(out, oracle.ways[k]);
+    }
+    text(out, "],");
+  }
+  bool outside = false;
+  double worst = 0;
+  if (answer.driver) {
+    const std::vector<float>& driver = *answer.driver;
+    // Judged as a whole vector against the way it fits (or comes nearest).
+    outside = !oracle.allows(driver);
+    const BuiltinWay& nearest = oracle.nearestWay(driver);
+    for (std::size_t c = 0; c < driver.size(); ++c)
+      if (!nearest.undefined[c])
+        worst = std::max(worst, slack(driver[c], nearest.value[c], nearest.lo[c], nearest.hi[c]));
+    text(out, "\"exact\":");
+    numbers(out, oracle.value);
+    out.push_back(',');
+  }
+  text(out, "\"fn\":\"");
+  text(out, answer.call->fn);
+  text(out, "\",\"hi\":");
+  numbers(out, oracle.hi);
+  fmt::format_to(std::back_inserter(out), ",\"line\":{},\"lo\":", answer.line);
+  numbers(out, oracle.lo);
+  text(out, ",\"rules\":\"");
+  text(out, precisionRulesName(answer.rules));
+  out.push_back('"');
+  if (answer.driver) {
+    text(out, ",\"slack\":");
+    if (std::isfinite(worst))
+      number(out, worst);
+    else
+      text(out, "\"inf\"");
+  }
+  if (any(oracle.undefined)) {
+    text(out, ",\"undefined\":");
+    flags(out, oracle.undefined);
+  }
+  text(out, ",\"value\":");
+  if (answer.driver)
+    numbers(out, *answer.driver);
+  else
+    numbers(out, oracle.value);
+  if (answer.driver) text(out, outside ? ",\"within_spec\":false" : ",\"within_spec\":true");
+  text(out, "}\n");
+  return outside;
+}
+
+}  // namespace snell

@@ -1,0 +1,53 @@
+#include "runner/line_chunks.h"
+
+#include <cstring>
+
+namespace snell {
+namespace {
+constexpr std::size_t kReadBytes = 1 << 20;
+}
+
+LineChunks::LineChunks(std::istream& in) : in_(in) {}
+
+bool LineChunks::fill() {
+  if (ended_) return false;
+  const std::size_t size = text_.size();
+  text_.resize(size + kReadBytes);
+  in_.read(text_.data() + size, static_cast<std::streamsize>(kReadBytes));
+  const auto got = static_cast<std::size_t>(in_.gcount());
+  text_.resize(size + got);
+  if (got < kReadBytes) ended_ = true;
+  return got > 0;
+}
+
+const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
+  // Drop the text of the chunk before; keep what is not yet split.
+  text_.erase(0, start_);
+  start_ = 0;
+  lines_.clear();
+  // Offsets first: text_ may move while it grows.
+  std::vector<std::pair<std::size_t, std::size_t>> spans;
+  std::size_t scanned = 0;
+  while (spans.size() < maxLines) {
+    const void* found = std::memchr(text_.data() + scanned, '\n', text_.size() - scanned);
+    if (found) {
+      const auto end = static_cast<std::size_t>(static_cast<const char*>(found) - text_.data());
+      spans.emplace_back(start_, end - start_);
+      start_ = scanned = end + 1;
+      continue;
+    }
+    scanned = text_.size();
+    if (fill()) continue;
+    if (start_ < text_.size()) {  // a last line with no newline
+      spans.emplace_back(start_, text_.size() - start_);
+      start_ = text_.size();
+    }
+    break;
+  }
+  first_ = read_ + 1;
+  read_ += spans.size();
+  for (const auto& [at, length] : spans) lines_.emplace_back(text_.data() + at, length);
+  return lines_;
+}
+
+}  // namespace snell

@@ -1,0 +1,35 @@
+#pragma once
+// Reads a stream a chunk of lines at a time, as std::getline would split
+// it ('\n' ends a line; a last line without one still counts), keeping only
+// the current chunk's text: memory stays the same however long the input.
+#include <cstddef>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace snell {
+
+class LineChunks {
+ public:
+  explicit LineChunks(std::istream& in);
+
+  // Up to `maxLines` further lines (fewer only at the end of the stream;
+  // none once it is done). The views stay valid until the next call.
+  const std::vector<std::string_view>& next(std::size_t maxLines);
+
+  // The number (from 1) of the first line of the last chunk.
+  std::size_t firstLineNumber() const { return first_; }
+
+ private:
+  bool fill();  // reads more text; false at the end of the stream
+
+  std::istream& in_;
+  std::string text_;       // this chunk's lines, then the start of the next
+  std::size_t start_ = 0;  // where the unread text begins in text_
+  bool ended_ = false;
+  std::vector<std::string_view> lines_;
+  std::size_t first_ = 1, read_ = 0;
+};
+
+}  // namespace snell

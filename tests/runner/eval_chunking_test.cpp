@@ -1,0 +1,100 @@
+// The pieces under `snell eval`'s streaming: lines split a chunk at a time
+// as std::getline splits them, and a pool that runs every block once.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "runner/block_pool.h"
+#include "runner/line_chunks.h"
+
+namespace snell {
+namespace {
+
+std::vector<std::string> byGetline(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> byChunks(const std::string& text, std::size_t chunk,
+                                  std::vector<std::size_t>* firsts = nullptr) {
+  std::istringstream in(text);
+  LineChunks chunks(in);
+  std::vector<std::string> lines;
+  for (;;) {
+    const auto& next = chunks.next(chunk);
+    if (next.empty()) break;
+    EXPECT_LE(next.size(), chunk);
+    if (firsts) firsts->push_back(chunks.firstLineNumber());
+    EXPECT_EQ(chunks.firstLineNumber(), lines.size() + 1);
+    lines.insert(lines.end(), next.begin(), next.end());
+  }
+  return lines;
+}
+
+TEST(LineChunks, SplitsAsGetlineDoes) {
+  for (const std::string text : {"", "a", "a\n", "a\nb", "\n\n", "a\r\n\nb\n", " \n x"}) {
+    SCOPED_TRACE(text);
+    EXPECT_EQ(byChunks(text, 1), byGetline(text));
+    EXPECT_EQ(byChunks(text, 2), byGetline(text));
+    EXPECT_EQ(byChunks(text, 1000), byGetline(text));
+  }
+}
+
+// Lines across the reader's 1 MiB reads, one longer than a read.
+TEST(LineChunks, SplitsLongInputAcrossReads) {
+  std::string text;
+  for (int k = 0; k < 40000; ++k) text += std::string(static_cast<std::size_t>(k % 97), 'x') + "\n";
+  text += std::string(3 << 20, 'y') + "\n" + "last";
+  const auto expected = byGetline(text);
+  std::vector<std::size_t> firsts;
+  EXPECT_EQ(byChunks(text, 4096, &firsts), expected);
+  EXPECT_EQ(firsts.size(), (expected.size() + 4095) / 4096);
+  EXPECT_EQ(byChunks(text, 1 << 30), expected);
+}
+
+TEST(BlockPool, RunsEveryBlockOnceOnEveryThread) {
+  for (unsigned threads : {1u, 2u, 5u}) {
+    BlockPool pool(threads);
+    EXPECT_EQ(pool.threads(), threads);
+    for (std::size_t count : {0, 1, 255, 256, 1000}) {
+      std::vector<std::atomic<int>> seen(count);
+      bool firstOnCaller = false;
+      const auto caller = std::this_thread::get_id();
+      pool.run(
+          count, 16,
+          [&](std::size_t begin, std::size_t end) {
+            EXPECT_LE(end - begin, 16u);
+            for (std::size_t k = begin; k < end; ++k) ++seen[k];
+          },
+          [&] { firstOnCaller = std::this_thread::get_id() == caller; });
+      EXPECT_TRUE(firstOnCaller);
+      for (std::size_t k = 0; k < count; ++k) EXPECT_EQ(seen[k], 1) << k;
+    }
+  }
+}
+
+TEST(BlockPool, RethrowsOnTheCallerAndKeepsWorking) {
+  BlockPool pool(3);
+  EXPECT_THROW(pool.run(100, 1,
+                        [](std::size_t begin, std::size_t) {
+                          if (begin == 57) throw std::runtime_error("block 57");
+                        }),
+               std::runtime_error);
+  EXPECT_THROW(
+      pool.run(
+          10, 1, [](std::size_t, std::size_t) {}, [] { throw std::runtime_error("the draw"); }),
+      std::runtime_error);
+  std::atomic<std::size_t> total = 0;
+  pool.run(100, 7, [&](std::size_t begin, std::size_t end) { total += end - begin; });
+  EXPECT_EQ(total, 100u);
+}
+
+}  // namespace
+}  // namespace snell
