@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <optional>
 #include <thread>
@@ -17,6 +18,7 @@
 #include "baseline/shard.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "compare/image_library.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/scene_file.h"
@@ -179,6 +181,19 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   supervisor.stop = interrupt.flag();
   run.workers = supervisor.jobs;
+  // The images across APIs are compared here once the workers are done; the
+  // image module (a third of a second of loading) opens meanwhile, so that
+  // comparison does not wait for it. A module that does not open is said
+  // by that comparison, which asks again.
+  std::future<void> imagesReady;
+  if (std::any_of(run.cases.begin(), run.cases.end(),
+                  [](const Case& c) { return c.spec.has("image"); }))
+    imagesReady = std::async(std::launch::async, [] {
+      try {
+        imageLibrary();
+      } catch (const SetupError&) {
+      }
+    });
   std::size_t finished = slots.size() - tasks.size();
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& result) {
     ++finished;
@@ -212,6 +227,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     });
     run.interruptedBy = interrupt.signal();
   }
+  if (imagesReady.valid()) imagesReady.wait();
   const auto crossApiStart = std::chrono::steady_clock::now();
   checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results);
   run.crossApiSeconds =
