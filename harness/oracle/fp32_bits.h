@@ -98,9 +98,15 @@ inline double floatAtOrBelow(double x) {
   if (x > kFp32Max) return kFp32Max;
   if (x < -kFp32Max) return -std::numeric_limits<double>::infinity();
   // The cast rounds to nearest: at most one float away from the answer.
+  // Which side it lands on is data (a branch on it is mispredicted half
+  // the time), so the step down is taken by arithmetic on the encoding:
+  // nextDownFloat(nearest), which is -1 on a positive encoding and +1 on a
+  // negative one. nearest is neither +0 nor -inf when it lies above x.
   const float nearest = static_cast<float>(x);
-  if (static_cast<double>(nearest) <= x) return nearest;
-  return nextDownFloat(nearest);
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(nearest);
+  const std::uint32_t above = static_cast<double>(nearest) > x ? 1u : 0u;
+  const std::uint32_t step = (bits >> 31) * 2u - 1u;
+  return std::bit_cast<float>(bits + above * step);
 }
 
 inline double floatAtOrAbove(double x) {
@@ -109,9 +115,13 @@ inline double floatAtOrAbove(double x) {
     return x;
   if (x > kFp32Max) return std::numeric_limits<double>::infinity();
   if (x < -kFp32Max) return -kFp32Max;
+  // The same step up (nextUpFloat(nearest)): nearest is neither -0 nor
+  // +inf when it lies below x.
   const float nearest = static_cast<float>(x);
-  if (static_cast<double>(nearest) >= x) return nearest;
-  return nextUpFloat(nearest);
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(nearest);
+  const std::uint32_t below = static_cast<double>(nearest) < x ? 1u : 0u;
+  const std::uint32_t step = 1u - (bits >> 31) * 2u;
+  return std::bit_cast<float>(bits + below * step);
 }
 
 }  // namespace snell::fp32_bits

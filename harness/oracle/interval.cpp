@@ -62,8 +62,8 @@ ClosedParts closedParts(const Interval& v, PrecisionRules rules) {
 // compiler's rounding picks. The allowed set and the error bound grow to
 // hold them too;
 // the region keeps the fold as an alternative leaf.
-Interval withFold(Interval r, double folded) {
-  if (r.undefined || !std::isfinite(folded)) return r;
+void addFold(Interval& r, double folded) {
+  if (r.undefined || !std::isfinite(folded)) return;
   const double slop = std::fabs(folded) * 0x1p-50;
   const Range fold =
       float_sets::admitFlushToZero(float_sets::roundedAround({folded, folded}, slop));
@@ -75,7 +75,6 @@ Interval withFold(Interval r, double folded) {
   r.region.maxSub = std::max(r.region.maxSub, r.region.mag);
   r.constant = true;
   r.folded = folded;
-  return r;
 }
 
 // Bounds past the float range: a result there may be the largest float or
@@ -88,9 +87,13 @@ enum class RegionOp { Add, Multiply };
 
 // a + b or a * b: the ideal range, the region of every regrouping with the
 // operands' own open regions, and the floats that can come out of it.
-Interval combine(const Interval& a, const Interval& b, RegionOp op) {
-  if (a.undefined || b.undefined) return Interval::unconstrained();
-  if (!std::isfinite(a.err) || !std::isfinite(b.err)) return Interval::unconstrained();
+// Written into `r`, a default Interval that is neither operand: the callers
+// return it by name, so it is built in place instead of copied out whole.
+void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op) {
+  if (a.undefined || b.undefined || !std::isfinite(a.err) || !std::isfinite(b.err)) {
+    r = Interval::unconstrained();
+    return;
+  }
   const PrecisionRules rules = currentPrecisionRules();
   // An open region joins the result's region; without distributivity a
   // sum is rounded before it is multiplied, and a leaf is taken closed.
@@ -113,9 +116,11 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
   const ClosedParts bv = parts(b);
   const IntervalRegion& ra = av.region;
   const IntervalRegion& rb = bv.region;
-  Interval r;
   r.region = op == RegionOp::Add ? sumRegion(ra, rb) : productRegion(ra, rb);
-  if (mayOverflowInside(r.region)) return Interval::unconstrained();
+  if (mayOverflowInside(r.region)) {
+    r = Interval::unconstrained();
+    return;
+  }
   const Range ideal =
       op == RegionOp::Add
           ? float_sets::exactSumRange(av.idealLo, av.idealHi, bv.idealLo, bv.idealHi)
@@ -130,7 +135,10 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
     set.lo = std::max(set.lo, plain.lo);
     set.hi = std::min(set.hi, plain.hi);
   }
-  if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return Interval::unconstrained();
+  if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) {
+    r = Interval::unconstrained();
+    return;
+  }
   set = float_sets::admitFlushToZero(set);
   r.lo = set.lo;
   r.hi = set.hi;
@@ -140,8 +148,7 @@ Interval combine(const Interval& a, const Interval& b, RegionOp op) {
       ideal.lo, ideal.hi,
       pending + float_sets::roundingError(ideal.lo - pending, ideal.hi + pending));
   if (a.constant && b.constant)
-    return withFold(r, op == RegionOp::Add ? a.folded + b.folded : a.folded * b.folded);
-  return r;
+    addFold(r, op == RegionOp::Add ? a.folded + b.folded : a.folded * b.folded);
 }
 
 }  // namespace
@@ -180,7 +187,11 @@ Interval Interval::unconstrained() {
   return r;
 }
 
-Interval operator+(const Interval& a, const Interval& b) { return combine(a, b, RegionOp::Add); }
+Interval operator+(const Interval& a, const Interval& b) {
+  Interval r;
+  combineInto(r, a, b, RegionOp::Add);
+  return r;
+}
 
 Interval operator-(const Interval& a) {
   Interval r = a;
@@ -195,7 +206,9 @@ Interval operator-(const Interval& a) {
 Interval operator-(const Interval& a, const Interval& b) { return a + (-b); }
 
 Interval operator*(const Interval& a, const Interval& b) {
-  return combine(a, b, RegionOp::Multiply);
+  Interval r;
+  combineInto(r, a, b, RegionOp::Multiply);
+  return r;
 }
 
 Interval operator/(const Interval& aIn, const Interval& bIn) {
@@ -219,7 +232,7 @@ Interval operator/(const Interval& aIn, const Interval& bIn) {
   const double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients.lo, quotients.hi)) +
                      float_sets::flushError(quotients.lo, quotients.hi);
   Interval r = leafValue(set.lo, set.hi, ideal.lo, ideal.hi, float_sets::up(propagated + own));
-  if (aIn.constant && bIn.constant) return withFold(r, aIn.folded / bIn.folded);
+  if (aIn.constant && bIn.constant) addFold(r, aIn.folded / bIn.folded);
   return r;
 }
 

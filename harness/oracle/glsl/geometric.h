@@ -19,9 +19,7 @@ T inherited(const T& value) {
 }
 template <class T, int Size>
 vec<T, Size> inherited(const vec<T, Size>& v) {
-  vec<T, Size> r;
-  for (int k = 0; k < Size; ++k) r[k] = inherited(v[k]);
-  return r;
+  return vec<T, Size>(typename vec<T, Size>::FromEach{}, [&](int k) { return inherited(v[k]); });
 }
 
 template <class T, int Size>

@@ -3,7 +3,9 @@
 // constructors, swizzles and operators the listings use. Matrices are
 // column-major, as GLSL stores them: m[c] is column c.
 #include <array>
+#include <cstddef>
 #include <span>
+#include <utility>
 
 #include "oracle/glsl/scalar.h"
 
@@ -30,6 +32,13 @@ struct vec {
     for (int k = 0; k < N; ++k) c[k] = wider[k];
   }
 
+  // Component k is f(k), called for k = 0, 1, ... in order and built in
+  // place: an Interval is ~150 bytes, and building the vector first and
+  // assigning each component over it copies every one of them.
+  struct FromEach {};
+  template <class F>
+  vec(FromEach, F&& f) : c(build(f, std::make_index_sequence<N>{})) {}
+
   T& operator[](int k) { return c[k]; }
   const T& operator[](int k) const { return c[k]; }
   std::span<const T> components() const { return c; }
@@ -51,6 +60,13 @@ struct vec {
   const T& r() const { return c[0]; }
   const T& g() const requires(N >= 2) { return c[1]; }
   const T& b() const requires(N >= 3) { return c[2]; }
+
+ private:
+  // Braced initialisation evaluates f(0), f(1), ... left to right.
+  template <class F, std::size_t... K>
+  static std::array<T, N> build(F& f, std::index_sequence<K...>) {
+    return {f(static_cast<int>(K))...};
+  }
 };
 
 template <class T>
@@ -75,16 +91,12 @@ using mat4 = mat<T, 4>;
 // A vector with every component `value`: GLSL's vec3(0.0).
 template <class T, int N>
 vec<T, N> splat(const T& value) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = value;
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int) { return value; });
 }
 
 template <class T, int N, class Op>
 vec<T, N> componentwise(const vec<T, N>& a, const vec<T, N>& b, Op op) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = op(a[k], b[k]);
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int k) { return op(a[k], b[k]); });
 }
 
 template <class T, int N>
@@ -97,27 +109,19 @@ vec<T, N> operator-(const vec<T, N>& a, const vec<T, N>& b) {
 }
 template <class T, int N>
 vec<T, N> operator-(const vec<T, N>& a) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = -a[k];
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int k) { return -a[k]; });
 }
 template <class T, int N>
 vec<T, N> operator*(const T& s, const vec<T, N>& v) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = s * v[k];
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int k) { return s * v[k]; });
 }
 template <class T, int N>
 vec<T, N> operator*(const vec<T, N>& v, const T& s) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = v[k] * s;
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int k) { return v[k] * s; });
 }
 template <class T, int N>
 vec<T, N> operator/(const vec<T, N>& v, const T& s) {
-  vec<T, N> r;
-  for (int k = 0; k < N; ++k) r[k] = v[k] / s;
-  return r;
+  return vec<T, N>(typename vec<T, N>::FromEach{}, [&](int k) { return v[k] / s; });
 }
 
 // Each row is a sum of products, so it gets dot()'s freedom of order.
