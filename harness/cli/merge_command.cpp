@@ -63,7 +63,7 @@ Command addMergeCommand(CLI::App& app) {
     checkAcrossApis(unchecked, options->out, results);
     writeFileAtomically(options->json, toResultsJsonLines(results));
     return reportResults(results, expectations, {},
-                         {options->json, options->junit, 0, results.size()});
+                         {options->json, options->junit, 0, results.size(), 0, 0, 0, ""});
   };
 }
 

@@ -35,8 +35,9 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   if (!output.json.empty())
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".csv"),
                         toResultsCsv(report));
-  const RunTiming timing =
+  RunTiming timing =
       summarizeTiming(results, output.wallSeconds, output.workers, output.crossApiSeconds);
+  timing.oracleStore = output.oracleStore;
   if (!output.json.empty() && output.wallSeconds > 0)
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".timing.json"),
                         runTimingJson(timing).dump(2) + "\n");

@@ -20,6 +20,7 @@ struct ResultsOutput {
   double wallSeconds = 0;
   int workers = 0;
   double crossApiSeconds = 0;
+  std::string oracleStore;  // where oracle results were kept; empty: nowhere
 };
 
 // Returns the exit code: 130 when interrupted, 1 for an unexpected failure, else 0.

@@ -29,6 +29,7 @@
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/interrupt_flag.h"
+#include "runner/oracle_store/oracle_store.h"
 #include "runner/supervisor.h"
 
 namespace snell::cli {
@@ -88,6 +89,30 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options) {
   return up;
 }
 
+namespace {
+
+// The folder of stored oracle results the workers use, made here; empty for
+// none. One that cannot be made costs speed, not results: said once, and
+// the oracle computes everything.
+std::string oracleStoreFor(const SuiteOptions& options) {
+  if (options.oracleCache == "off") return "";
+  const fs::path dir =
+      options.oracleCache.empty() ? defaultOracleStoreDir() : fs::path(options.oracleCache);
+  if (dir.empty()) return "";
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error || !fs::is_directory(dir)) {
+    fmt::print(stderr,
+               "snell: {}: cannot keep oracle results here ({}); every oracle result is "
+               "computed afresh. Pass --oracle-cache DIR, or --oracle-cache off to say so\n",
+               dir.string(), error ? error.message() : "not a folder");
+    return "";
+  }
+  return fs::absolute(dir).string();
+}
+
+}  // namespace
+
 void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   options.shaders = defaultShadersDir();
   options.golden = defaultGoldenDir();
@@ -105,6 +130,9 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   sub.add_option("--timeout", options.timeout,
                  "Seconds a case may take before its worker is killed (default: the manifest's)")
       ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
+  sub.add_option("--oracle-cache", options.oracleCache,
+                 "Folder where oracle results are kept across runs, or off (default: "
+                 "$SNELL_ORACLE_CACHE, else ~/.cache/snell/oracle)");
   sub.add_flag("--validation", options.validation,
                "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
@@ -180,6 +208,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                         ? options.jobs
                         : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   supervisor.stop = interrupt.flag();
+  run.oracleStore = oracleStoreFor(options);
+  supervisor.oracleStore = run.oracleStore;
   run.workers = supervisor.jobs;
   // The images across APIs are compared here once the workers are done; the
   // image module (a third of a second of loading) opens meanwhile, so that
@@ -235,6 +265,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   // The streamed file is in completion order; the kept one is in task order,
   // so it is the same whatever the number of workers.
   if (json) json->finish(toResultsJsonLines(run.results, run.interruptedBy != 0));
+  if (!run.oracleStore.empty()) trimOracleStore(run.oracleStore, kOracleStoreMaxBytes);
   return run;
 }
 

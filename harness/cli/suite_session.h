@@ -26,6 +26,9 @@ struct SuiteOptions {
   bool validation = false;
   int jobs = 0;        // 0: one per core
   double timeout = 0;  // 0: each manifest's own
+  // Where the workers keep oracle results across runs: a folder, "off", or
+  // empty for the default (runner/oracle_store/oracle_store.h).
+  std::string oracleCache;
   // `run` only (bless leaves them empty):
   std::string expectations;  // folder or PREFIX-fails.txt
   int reruns = 0;            // reruns of an unexpected failure
@@ -56,6 +59,7 @@ struct SuiteRun {
   std::size_t planned = 0;           // results the run would have given
   int workers = 0;                   // worker processes side by side
   double crossApiSeconds = 0;        // the supervisor's images across APIs
+  std::string oracleStore;           // the folder of stored oracle results; empty: none
 };
 
 // The options `run` and `bless` share, with the repository's folders as defaults.

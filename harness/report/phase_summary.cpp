@@ -11,13 +11,15 @@ double BackendTiming::vectorsPerSecond() const {
 
 RunTiming summarizeTiming(const std::vector<CaseResult>& results, double wallSeconds, int workers,
                           double crossApiSeconds) {
-  RunTiming timing{wallSeconds, workers, crossApiSeconds, {}};
+  RunTiming timing{wallSeconds, workers, crossApiSeconds, {}, {}};
   for (const CaseResult& r : results) {
     BackendTiming& b = timing.backends[r.backend];
     ++b.cases;
     b.vectors += r.vectorsChecked();
     b.phases += r.phases;
     b.caseSeconds += r.seconds;
+    b.oracleResults += r.oracleResults;
+    b.oracleStored += r.oracleStored;
   }
   return timing;
 }
@@ -41,6 +43,16 @@ void printRunTiming(std::ostream& out, const RunTiming& timing) {
                "{}: {} vectors checked, {:.0f} per second of case time (compile, draw, read back, "
                "oracle, compare)\n",
                name, b.vectors, b.vectorsPerSecond());
+  int results = 0, stored = 0;
+  for (const auto& [name, b] : timing.backends) {
+    results += b.oracleResults;
+    stored += b.oracleStored;
+  }
+  if (timing.oracleStore.empty())
+    fmt::print(out, "oracle results: {} computed, none kept (--oracle-cache off)\n", results);
+  else
+    fmt::print(out, "oracle results: {} computed, {} read from {} (computed by an earlier run)\n",
+               results - stored, stored, timing.oracleStore);
   fmt::print(out,
              "wall {:.2f} s with {} worker{} (the phases are worker seconds); images across APIs "
              "{:.3f} s\n",
@@ -57,11 +69,14 @@ nlohmann::json runTimingJson(const RunTiming& timing) {
                       {"vectors", b.vectors},
                       {"case_seconds", b.caseSeconds},
                       {"vectors_per_second", b.vectorsPerSecond()},
+                      {"oracle_results", b.oracleResults},
+                      {"oracle_stored", b.oracleStored},
                       {"phases", phases}};
   }
   return {{"wall_seconds", timing.wallSeconds},
           {"workers", timing.workers},
           {"cross_api_seconds", timing.crossApiSeconds},
+          {"oracle_store", timing.oracleStore},
           {"backends", backends}};
 }
 

@@ -18,6 +18,8 @@ struct BackendTiming {
   std::size_t vectors = 0;
   PhaseTimes phases;       // start included
   double caseSeconds = 0;  // the cases' own wall time: every phase but start
+  int oracleResults = 0;   // the oracle results the cases used
+  int oracleStored = 0;    // of those, read from the oracle store
   // Vectors over the time spent on the cases that checked them, the oracle
   // and the comparison included; 0 when nothing was checked.
   double vectorsPerSecond() const;
@@ -28,6 +30,7 @@ struct RunTiming {
   int workers = 0;         // run side by side
   // Work of the supervisor itself after the cases: images across APIs.
   double crossApiSeconds = 0;
+  std::string oracleStore;  // the folder of stored oracle results; empty: none
   std::map<std::string, BackendTiming> backends;
 };
 

@@ -26,6 +26,10 @@ struct CaseResult {
   double seconds = 0;         // the whole case
   double backendSeconds = 0;  // compile + draw + read back
   double oracleSeconds = 0;   // 0 when the oracle result came from the cache
+  // The oracle results the case used, and how many of them an earlier run
+  // had computed (read from the oracle store, runner/oracle_store).
+  int oracleResults = 0;
+  int oracleStored = 0;
   // The case's wall time by phase, which add up to `seconds`; `start` comes
   // on top: a worker's start-up, charged to the first case it runs.
   PhaseTimes phases;

@@ -51,6 +51,8 @@ nlohmann::json toJson(const CaseResult& r) {
                            {"seconds", r.seconds},
                            {"backend_seconds", r.backendSeconds},
                            {"oracle_seconds", r.oracleSeconds},
+                           {"oracle_results", r.oracleResults},
+                           {"oracle_stored", r.oracleStored},
                            {"phases", phasesJson(r.phases)},
                            {"reruns", reruns}};
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
@@ -77,6 +79,9 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   r.backendSeconds = j.at("backend_seconds").get<double>();
   r.oracleSeconds = j.at("oracle_seconds").get<double>();
   r.phases = phasesFromJson(j);
+  // Absent from records written before results were stored.
+  if (j.contains("oracle_results")) r.oracleResults = jsonCount<int>(j.at("oracle_results"));
+  if (j.contains("oracle_stored")) r.oracleStored = jsonCount<int>(j.at("oracle_stored"));
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

@@ -33,38 +33,14 @@ const Scene& SceneCache::get(const std::string& name) {
   return it->second;
 }
 
-const std::vector<OracleVarying>& OracleCache::get(const Case& c, const NamedOracle& named,
-                                                   const ResolvedBindings& bindings,
-                                                   PrecisionRules rules, double* secondsSpent) {
-  *secondsSpent = 0;
-  const std::tuple key{c.id, named.label, rules};
-  if (auto it = results_.find(key); it != results_.end()) return it->second;
-  const PhaseScope phase(Phase::Oracle);
-  const auto start = std::chrono::steady_clock::now();
-  const Manifest& m = *c.manifest;
-  const VertexOracle* oracle = named.oracle.get();
-  const std::vector<std::string> outputs = oracle->outputs();
-  for (const std::string& name : m.captureVertex)
-    if (std::find(outputs.begin(), outputs.end(), name) == outputs.end())
-      throw std::logic_error(
-          fmt::format("{}: `{}` is not computed by oracle `{}`: "
-                      "validateCase lets no such manifest through",
-                      m.path.string(), name, named.label));
-  std::vector<OracleVarying> all = oracle->evaluate(
-      {bindings.uniforms, m.constants, bindings.attributes, bindings.vertexCount, rules});
-  std::vector<OracleVarying> captured;
-  for (const std::string& name : m.captureVertex)
-    for (OracleVarying& v : all)
-      if (v.name == name) captured.push_back(std::move(v));
-  *secondsSpent = secondsSince(start);
-  return results_.emplace(key, std::move(captured)).first->second;
-}
-
 CaseResult CaseRunner::run(const Case& c) {
   const auto start = std::chrono::steady_clock::now();
+  const int evaluatedBefore = oracles_.evaluated(), storedBefore = oracles_.stored();
   PhaseRecording phases;
   CaseResult result = runChecks(c);
   result.phases = phases.finish();
+  result.oracleResults = oracles_.evaluated() - evaluatedBefore;
+  result.oracleStored = oracles_.stored() - storedBefore;
   result.seconds = secondsSince(start);
   return result;
 }

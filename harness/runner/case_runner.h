@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -15,23 +16,9 @@
 #include "runner/case_result.h"
 #include "runner/image_check.h"
 #include "runner/listing_oracles.h"
+#include "runner/oracle_cache.h"
 
 namespace snell {
-
-class OracleCache {
- public:
-  // Evaluates on first use. Throws UsageError when the manifest captures an
-  // output the oracle does not compute.
-  // Intervals follow `rules`, the API of the backend they judge.
-  const std::vector<OracleVarying>& get(const Case& c, const NamedOracle& oracle,
-                                        const ResolvedBindings& bindings, PrecisionRules rules,
-                                        double* secondsSpent);
-
- private:
-  // By case id and oracle label.
-  std::map<std::tuple<std::string, std::string, PrecisionRules>, std::vector<OracleVarying>>
-      results_;
-};
 
 class SceneCache {
  public:

@@ -114,7 +114,8 @@ void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, cons
 }
 
 FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
-                                         const ResolvedBindings& bindings) {
+                                         const ResolvedBindings& bindings,
+                                         OracleCache& oracleCache) {
   requireDrawingScene(m, scene);
   const std::vector<NamedOracle> oracles = vectorOracles(m, CaptureStage::Fragment);
   for (const NamedOracle& oracle : oracles) checkCapturesAgainstOracle(m, oracle);
@@ -179,8 +180,8 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     const auto start = std::chrono::steady_clock::now();
     std::vector<OracleVarying> expected = [&] {
       const PhaseScope phase(Phase::Oracle);
-      return oracle.oracle->evaluate({bindings.uniforms, m.constants, inputs, pixels.size(),
-                                      precisionRulesForApi(backend.driverInfo().api)});
+      return oracleCache.evaluate(oracle, {bindings.uniforms, m.constants, inputs, pixels.size(),
+                                           precisionRulesForApi(backend.driverInfo().api)});
     }();
     check.oracleSeconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

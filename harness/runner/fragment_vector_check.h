@@ -12,6 +12,7 @@
 #include "backends/backend.h"
 #include "compare/vector_check.h"
 #include "core/case.h"
+#include "runner/oracle_cache.h"
 
 namespace snell {
 
@@ -35,7 +36,9 @@ void checkFragmentCaptures(const Manifest& m, const ProgramSource& program, cons
 // Throws UsageError "MANIFEST:LINE: ..." when a capture is neither an input
 // nor an output of the oracle, an oracle input is not captured, or the
 // scene draws nothing.
+// The oracle's results come from `oracleCache` (stored across runs there).
 FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, const Scene& scene,
-                                         const ResolvedBindings& bindings);
+                                         const ResolvedBindings& bindings,
+                                         OracleCache& oracleCache);
 
 }  // namespace snell

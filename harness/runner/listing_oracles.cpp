@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/build_id.h"
 #include "core/errors.h"
 #include "core/glsl_declarations.h"
 #include "derived/derived_drawing.h"
@@ -47,15 +48,42 @@ std::unique_ptr<VertexOracle> handWritten(const Manifest& m) {
   }
 }
 
+// The builds of the code an oracle runs: its own and the interval
+// arithmetic's (the same executable, unless they ever move into libraries).
+std::string codeBuild(const void* oracleCode) {
+  const std::string own = buildIdContaining(oracleCode);
+  const std::string intervals = buildIdContaining(reinterpret_cast<const void*>(&makeVertexOracle));
+  return own.empty() || intervals.empty() ? "" : own + " " + intervals;
+}
+
+std::string handWrittenIdentity(const Manifest& m) {
+  const std::string build = codeBuild(reinterpret_cast<const void*>(&makeVertexOracle));
+  return build.empty() ? "" : fmt::format("hand-written {} build {}", m.oracle, build);
+}
+
+std::string derivedIdentity(const derived::ShaderSource& source,
+                            const std::vector<derived::OutputRequest>& wanted) {
+  const std::string build =
+      codeBuild(reinterpret_cast<const void*>(&derived::makeDerivedVectorOracle));
+  if (build.empty()) return "";
+  std::string identity = fmt::format("derived build {} stage {} file {} ({} bytes)\n{}\n", build,
+                                     static_cast<int>(source.stage), source.file,
+                                     source.text.size(), source.text);
+  for (const derived::OutputRequest& r : wanted)
+    identity += fmt::format("{} after line {}\n", r.name, r.afterLine);
+  return identity;
+}
+
 }  // namespace
 
 std::vector<NamedOracle> vectorOracles(const Manifest& m, CaptureStage stage) {
   std::vector<NamedOracle> oracles;
-  if (!m.oracle.empty()) oracles.push_back({m.oracle, handWritten(m)});
+  if (!m.oracle.empty()) oracles.push_back({m.oracle, handWritten(m), handWrittenIdentity(m)});
   if (m.derivedOracle) {
     const derived::ShaderSource source = stageSource(m, stage);
-    oracles.push_back(
-        {kDerivedOracleLabel, derived::makeDerivedVectorOracle(source, requests(m, stage))});
+    const std::vector<derived::OutputRequest> wanted = requests(m, stage);
+    oracles.push_back({kDerivedOracleLabel, derived::makeDerivedVectorOracle(source, wanted),
+                       derivedIdentity(source, wanted)});
   }
   return oracles;
 }

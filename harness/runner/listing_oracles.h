@@ -18,6 +18,11 @@ inline constexpr const char* kDerivedOracleLabel = "derived";
 struct NamedOracle {
   std::string label;  // the hand-written oracle's name, or "derived"
   std::unique_ptr<VertexOracle> oracle;
+  // What its answers depend on besides their input: the build of its code
+  // and its name, or the listing's text and requests for the derived one.
+  // The key of its stored results (runner/oracle_store); empty where the
+  // code's build cannot be told apart, and nothing is stored.
+  std::string identity;
 };
 
 enum class CaptureStage { Vertex, Fragment };

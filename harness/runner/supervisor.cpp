@@ -87,6 +87,8 @@ class Supervision {
       if (!options_.blessFlags.empty())
         argv.insert(argv.end(), {"--bless-flags", options_.blessFlags});
       if (!options_.runId.empty()) argv.insert(argv.end(), {"--run-id", options_.runId});
+      if (!options_.oracleStore.empty())
+        argv.insert(argv.end(), {"--oracle-store", options_.oracleStore});
       argv.insert(
           argv.end(),
           {"--spawned-at", std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(

@@ -34,6 +34,7 @@ struct SupervisorOptions {
   std::vector<std::string> backendArgs;  // --device, --gl-provider: passed to every worker
   std::string blessFlags;                // WorkerOptions::blessFlags
   std::string runId;                     // WorkerOptions::runId
+  std::string oracleStore;               // WorkerOptions::oracleStore
 };
 
 using ResultCallback = std::function<void(std::size_t taskIndex, const CaseResult&)>;

@@ -47,7 +47,9 @@ int runWorker(const WorkerOptions& options) {
   for (const Case& c : cases) byId[c.id] = &c;
 
   std::unique_ptr<Backend> backend;  // loaded on the first case, not before
-  OracleCache oracles;
+  OracleCache oracles(options.oracleStore.empty()
+                          ? std::nullopt
+                          : std::optional<OracleStore>(OracleStore(options.oracleStore)));
   SceneCache scenes(sceneSearchPath(options.shaders));
   ReferenceCache references =
       options.runId.empty() ? ReferenceCache() : ReferenceCache(options.outDir, options.runId);

@@ -31,6 +31,8 @@ struct WorkerOptions {
   // the time until its driver is up is the first case's `start` phase.
   // 0: unknown, not charged.
   long long spawnedAtNs = 0;
+  // Folder of oracle results kept across runs; empty: none.
+  std::string oracleStore;
 };
 
 // The JSON a describing worker prints, as in a result's "driver".

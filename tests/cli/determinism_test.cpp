@@ -37,7 +37,8 @@ std::string runResults(const std::string& environment, int jobs) {
   std::string out;
   for (std::string line; std::getline(in, line);) {
     nlohmann::json j = nlohmann::json::parse(line);
-    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds", "phases"})
+    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds", "phases",
+                               "oracle_stored"})
       j.erase(timing);
     out += j.dump() + "\n";
   }
@@ -53,15 +54,34 @@ int repeats() {
   return runs;
 }
 
+// Every run computes its oracle results afresh (no stored ones), so the
+// oracle's own determinism is under test too.
+constexpr const char* kFresh = "SNELL_ORACLE_CACHE=off";
+
 TEST(Determinism, RepeatedRunsThreadCountsAndWorkerCountsAgreeBitForBit) {
-  const std::string first = runResults("", 2);
+  const std::string first = runResults(kFresh, 2);
   ASSERT_FALSE(first.empty());
   const int runs = repeats();
-  for (int run = 1; run < runs; ++run) EXPECT_EQ(runResults("", 2), first) << "run " << run;
+  for (int run = 1; run < runs; ++run) EXPECT_EQ(runResults(kFresh, 2), first) << "run " << run;
   for (const char* threads : {"0", "1", "2"})
     for (int jobs : {1, 2})
-      EXPECT_EQ(runResults(fmt::format("LP_NUM_THREADS={}", threads), jobs), first)
+      EXPECT_EQ(runResults(fmt::format("{} LP_NUM_THREADS={}", kFresh, threads), jobs), first)
           << "LP_NUM_THREADS=" << threads << " -j " << jobs;
+}
+
+// A run that reads its oracle results from the store (written by the run
+// before it) gives the verdicts of one that computes them.
+TEST(Determinism, StoredOracleResultsGiveTheVerdictsOfComputedOnes) {
+  const fs::path store =
+      fs::temp_directory_path() / fmt::format("snell-determinism-store-{}", getpid());
+  fs::remove_all(store);
+  const std::string computed = runResults(kFresh, 2);
+  ASSERT_FALSE(computed.empty());
+  const std::string withStore = fmt::format("SNELL_ORACLE_CACHE={}", store.string());
+  EXPECT_EQ(runResults(withStore, 2), computed) << "the run that stores them";
+  ASSERT_TRUE(fs::exists(store));
+  EXPECT_EQ(runResults(withStore, 1), computed) << "a run that reads them";
+  fs::remove_all(store);
 }
 
 }  // namespace

@@ -1,0 +1,58 @@
+#pragma once
+// Oracle results kept on disk between runs. An oracle's answer depends only
+// on its code, the listing it follows and its input, and computing it is
+// most of a run's time (the intervals), while a driver developer runs the
+// same snell build on the same cases again and again. So each result is
+// stored under a digest of all of those (oracle_store_key.h) and read back
+// when the same oracle meets the same input again: a hit gives the very
+// bytes the oracle computed, and any change to the build, the listing or
+// an input is another key.
+//
+// One file per result, written beside its name and renamed into place, so
+// concurrent workers never read half a file; a damaged file reads as a
+// miss. The folder is trimmed to a size after each run, the least recently
+// used results first.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "core/content_hash.h"
+#include "core/expected_values.h"
+
+namespace snell {
+
+// What a run may keep, at most (Mesa's shader cache keeps 1 GiB too).
+inline constexpr std::uintmax_t kOracleStoreMaxBytes = std::uintmax_t{1} << 30;
+
+class OracleStore {
+ public:
+  explicit OracleStore(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  const std::filesystem::path& dir() const { return dir_; }
+
+  // The result stored under `key`, or nothing (absent, unreadable,
+  // damaged). A hit marks the file as used now, for the trim.
+  std::optional<std::vector<OracleVarying>> load(const Digest& key) const;
+  // False when it could not be written (a full disk, a read-only folder):
+  // the result is then computed again next time, nothing else changes.
+  bool save(const Digest& key, const std::vector<OracleVarying>& result) const;
+
+ private:
+  std::filesystem::path pathOf(const Digest& key) const;
+  std::filesystem::path dir_;
+};
+
+// Where results are kept unless the user says otherwise: $SNELL_ORACLE_CACHE,
+// else $XDG_CACHE_HOME/snell/oracle, else $HOME/.cache/snell/oracle; empty
+// when none of those is set, or when SNELL_ORACLE_CACHE is "off".
+std::filesystem::path defaultOracleStoreDir();
+
+struct StoreTrim {
+  std::size_t removed = 0;     // files
+  std::uintmax_t kept = 0;     // bytes left
+};
+// Removes the least recently used results until at most `maxBytes` are
+// left, and any temporary file an interrupted write left behind.
+StoreTrim trimOracleStore(const std::filesystem::path& dir, std::uintmax_t maxBytes);
+
+}  // namespace snell

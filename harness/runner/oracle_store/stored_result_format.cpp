@@ -1,0 +1,204 @@
+#include "runner/oracle_store/stored_result_format.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace snell {
+namespace {
+
+constexpr char kMagic[8] = {'s', 'n', 'e', 'l', 'l', 'o', 'r', 'c'};
+
+class Writer {
+ public:
+  template <typename T>
+    requires std::is_trivially_copyable_v<T>
+  void put(const T& value) {
+    out_.append(reinterpret_cast<const char*>(&value), sizeof value);
+  }
+  void put(const std::string& text) {
+    put(static_cast<std::uint64_t>(text.size()));
+    out_ += text;
+  }
+  template <typename T>
+  void putArray(const std::vector<T>& values) {
+    put(static_cast<std::uint64_t>(values.size()));
+    out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
+  }
+  // Interval bounds are floats or infinities: stored in four bytes when
+  // every one converts back to the same double, else in eight.
+  void putBounds(const std::vector<double>& values) {
+    bool narrow = true;
+    for (double v : values)
+      if (std::isnan(v) || static_cast<double>(static_cast<float>(v)) != v) narrow = false;
+    put(static_cast<std::uint8_t>(narrow));
+    if (!narrow) return putArray(values);
+    std::vector<float> floats(values.begin(), values.end());
+    putArray(floats);
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+// Every read is checked against the end: damaged bytes make `ok` false,
+// never an out-of-bounds read or a huge allocation.
+class Reader {
+ public:
+  explicit Reader(std::string_view bytes) : at_(bytes.data()), end_(bytes.data() + bytes.size()) {}
+  bool ok() const { return ok_; }
+  bool atEnd() const { return at_ == end_; }
+
+  template <typename T>
+    requires std::is_trivially_copyable_v<T>
+  T get() {
+    T value{};
+    if (!take(&value, sizeof value)) return T{};
+    return value;
+  }
+  std::string getString() {
+    const auto size = get<std::uint64_t>();
+    if (!fits(size, 1)) return {};
+    std::string text(at_, size);
+    at_ += size;
+    return text;
+  }
+  template <typename T>
+  std::vector<T> getArray() {
+    const auto count = get<std::uint64_t>();
+    if (!fits(count, sizeof(T))) return {};
+    std::vector<T> values(count);
+    take(values.data(), count * sizeof(T));
+    return values;
+  }
+  std::vector<double> getBounds() {
+    const auto narrow = get<std::uint8_t>();
+    if (narrow > 1) ok_ = false;
+    if (narrow != 1) return getArray<double>();
+    const std::vector<float> floats = getArray<float>();
+    return {floats.begin(), floats.end()};
+  }
+
+ private:
+  bool fits(std::uint64_t count, std::size_t size) {
+    if (ok_ && count <= static_cast<std::uint64_t>(end_ - at_) / size) return true;
+    ok_ = false;
+    return false;
+  }
+  bool take(void* out, std::size_t size) {
+    if (!fits(size, 1)) return false;
+    std::memcpy(out, at_, size);
+    at_ += size;
+    return true;
+  }
+  const char* at_;
+  const char* end_;
+  bool ok_ = true;
+};
+
+void putAlternative(Writer& w, const OracleAlternative& way) {
+  w.putArray(way.reference);
+  w.putArray(way.lo);
+  w.putArray(way.hi);
+  w.putArray(way.undefined);
+}
+
+OracleAlternative getAlternative(Reader& r) {
+  OracleAlternative way;
+  way.reference = r.getArray<double>();
+  way.lo = r.getArray<double>();
+  way.hi = r.getArray<double>();
+  way.undefined = r.getArray<std::uint8_t>();
+  return way;
+}
+
+std::string encodePayload(const std::vector<OracleVarying>& result) {
+  Writer w;
+  w.put(static_cast<std::uint64_t>(result.size()));
+  for (const OracleVarying& v : result) {
+    w.put(v.name);
+    w.put(static_cast<std::int32_t>(v.components));
+    w.put(static_cast<std::uint64_t>(v.mergedToHull));
+    w.putArray(v.reference);
+    w.putArray(v.strict);
+    w.putBounds(v.lo);
+    w.putBounds(v.hi);
+    w.putArray(v.undefined);
+    w.put(static_cast<std::uint64_t>(v.alternatives.size()));
+    for (const SampleAlternatives& sample : v.alternatives) {
+      w.put(static_cast<std::uint64_t>(sample.sample));
+      w.put(static_cast<std::uint64_t>(sample.ways.size()));
+      for (const OracleAlternative& way : sample.ways) putAlternative(w, way);
+    }
+  }
+  return w.take();
+}
+
+std::optional<std::vector<OracleVarying>> decodePayload(std::string_view payload) {
+  Reader r(payload);
+  std::vector<OracleVarying> result;
+  const auto count = r.get<std::uint64_t>();
+  for (std::uint64_t k = 0; r.ok() && k < count; ++k) {
+    OracleVarying v;
+    v.name = r.getString();
+    v.components = r.get<std::int32_t>();
+    v.mergedToHull = r.get<std::uint64_t>();
+    v.reference = r.getArray<double>();
+    v.strict = r.getArray<float>();
+    v.lo = r.getBounds();
+    v.hi = r.getBounds();
+    v.undefined = r.getArray<std::uint8_t>();
+    const auto samples = r.get<std::uint64_t>();
+    for (std::uint64_t s = 0; r.ok() && s < samples; ++s) {
+      SampleAlternatives sample;
+      sample.sample = r.get<std::uint64_t>();
+      const auto ways = r.get<std::uint64_t>();
+      for (std::uint64_t w = 0; r.ok() && w < ways; ++w) sample.ways.push_back(getAlternative(r));
+      v.alternatives.push_back(std::move(sample));
+    }
+    result.push_back(std::move(v));
+  }
+  if (!r.ok() || !r.atEnd()) return std::nullopt;
+  return result;
+}
+
+struct Header {
+  char magic[8];
+  std::uint32_t format;
+  std::uint32_t reserved;
+  Digest key;
+  Digest payloadDigest;
+  std::uint64_t payloadSize;
+};
+static_assert(std::is_trivially_copyable_v<Header>);
+
+}  // namespace
+
+std::string encodeStoredResult(const Digest& key, const std::vector<OracleVarying>& result) {
+  const std::string payload = encodePayload(result);
+  Header header{};
+  std::memcpy(header.magic, kMagic, sizeof kMagic);
+  header.format = kStoredResultFormat;
+  header.key = key;
+  header.payloadDigest = digestOf(payload);
+  header.payloadSize = payload.size();
+  std::string bytes(reinterpret_cast<const char*>(&header), sizeof header);
+  return bytes + payload;
+}
+
+std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
+                                                             std::string_view bytes) {
+  Header header;
+  if (bytes.size() < sizeof header) return std::nullopt;
+  std::memcpy(&header, bytes.data(), sizeof header);
+  const std::string_view payload = bytes.substr(sizeof header);
+  if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 ||
+      header.format != kStoredResultFormat || !(header.key == key) ||
+      header.payloadSize != payload.size() || !(digestOf(payload) == header.payloadDigest))
+    return std::nullopt;
+  return decodePayload(payload);
+}
+
+}  // namespace snell

@@ -1,0 +1,63 @@
+// `run --oracle-cache`: a second run reads the oracle results the first one
+// computed and says so; `off` keeps none; a folder that cannot be made is
+// said once and costs only speed.
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "snell_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using snell::testing::runSnell;
+
+class OracleCacheCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / fmt::format("snell-oracle-cache-cli-{}", getpid());
+    fs::remove_all(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  snell::testing::Outcome run(const std::string& cache) {
+    return runSnell(fmt::format("run --backend gl --filter 'orange-book/14.1-fresnel/s*' "
+                                "--out {} --oracle-cache {}",
+                                (dir_ / "out").string(), cache));
+  }
+  fs::path dir_;
+};
+
+TEST_F(OracleCacheCli, ASecondRunReadsWhatTheFirstComputed) {
+  const std::string store = (dir_ / "store").string();
+  const auto first = run(store);
+  ASSERT_EQ(first.code, 0) << first.out;
+  EXPECT_NE(first.out.find(fmt::format("oracle results: 3 computed, 0 read from {}", store)),
+            std::string::npos)
+      << first.out;
+  const auto second = run(store);
+  ASSERT_EQ(second.code, 0) << second.out;
+  EXPECT_NE(second.out.find(fmt::format("oracle results: 0 computed, 3 read from {}", store)),
+            std::string::npos)
+      << second.out;
+}
+
+TEST_F(OracleCacheCli, OffKeepsNone) {
+  const auto outcome = run("off");
+  ASSERT_EQ(outcome.code, 0) << outcome.out;
+  EXPECT_NE(outcome.out.find("oracle results: 3 computed, none kept (--oracle-cache off)"),
+            std::string::npos)
+      << outcome.out;
+}
+
+TEST_F(OracleCacheCli, AFolderThatCannotBeMadeIsSaidAndTheRunGoesOn) {
+  fs::create_directories(dir_);
+  std::ofstream(dir_ / "file") << "not a folder";
+  const auto outcome = run((dir_ / "file" / "store").string());
+  ASSERT_EQ(outcome.code, 0) << outcome.out;
+  EXPECT_NE(outcome.out.find("cannot keep oracle results here"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("none kept"), std::string::npos) << outcome.out;
+}
+
+}  // namespace
