@@ -26,8 +26,10 @@ struct CaseResult {
   double seconds = 0;         // the whole case
   double backendSeconds = 0;  // compile + draw + read back
   double oracleSeconds = 0;   // 0 when the oracle result came from the cache
-  // The oracle results the case used, and how many of them an earlier run
-  // had computed (read from the oracle store, runner/oracle_store).
+  // The oracle results the case computed or read (vectors, and a reference
+  // image it rendered or read from the store, not one it shared with the
+  // run's other worker), and how many of them an earlier run had computed
+  // (read from the oracle store, runner/oracle_store).
   int oracleResults = 0;
   int oracleStored = 0;
   // The case's wall time by phase, which add up to `seconds`; `start` comes

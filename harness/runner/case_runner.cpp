@@ -35,12 +35,18 @@ const Scene& SceneCache::get(const std::string& name) {
 
 CaseResult CaseRunner::run(const Case& c) {
   const auto start = std::chrono::steady_clock::now();
-  const int evaluatedBefore = oracles_.evaluated(), storedBefore = oracles_.stored();
+  // Vector results and reference images alike: computed, or read from the store.
+  const auto counts = [&] {
+    return std::pair{oracles_.evaluated() + references_.rendered() + references_.fromStore(),
+                     oracles_.stored() + references_.fromStore()};
+  };
+  const auto before = counts();
   PhaseRecording phases;
   CaseResult result = runChecks(c);
   result.phases = phases.finish();
-  result.oracleResults = oracles_.evaluated() - evaluatedBefore;
-  result.oracleStored = oracles_.stored() - storedBefore;
+  const auto after = counts();
+  result.oracleResults = static_cast<int>(after.first - before.first);
+  result.oracleStored = static_cast<int>(after.second - before.second);
   result.seconds = secondsSince(start);
   return result;
 }

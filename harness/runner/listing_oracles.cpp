@@ -96,11 +96,17 @@ DrawingOracles drawingOracles(const Manifest& m) {
           fmt::format("oracle `{}` has no fragment part, so the \"image\" check has no "
                       "reference; add \"derived\" to `oracle` for one drawn from the listing",
                       m.oracle));
-    return {m.oracle, handWritten(m), makeFragmentOracle(m.oracle)};
+    return {m.oracle, handWritten(m), makeFragmentOracle(m.oracle), handWrittenIdentity(m)};
   }
-  return {kDerivedOracleLabel,
-          derived::makeDerivedDrawingVertexOracle(stageSource(m, CaptureStage::Vertex)),
-          derived::makeDerivedFragmentOracle(stageSource(m, CaptureStage::Fragment))};
+  const derived::ShaderSource vertex = stageSource(m, CaptureStage::Vertex);
+  const derived::ShaderSource fragment = stageSource(m, CaptureStage::Fragment);
+  const std::string vertexIdentity = derivedIdentity(vertex, {});
+  const std::string fragmentIdentity = derivedIdentity(fragment, {});
+  return {kDerivedOracleLabel, derived::makeDerivedDrawingVertexOracle(vertex),
+          derived::makeDerivedFragmentOracle(fragment),
+          vertexIdentity.empty() || fragmentIdentity.empty()
+              ? ""
+              : "drawing\n" + vertexIdentity + fragmentIdentity};
 }
 
 std::string oracleLabel(const Manifest& m) {

@@ -41,6 +41,7 @@ struct DrawingOracles {
   std::string label;
   std::unique_ptr<VertexOracle> vertex;
   std::unique_ptr<FragmentOracle> fragment;
+  std::string identity;  // as NamedOracle::identity, for both parts
 };
 DrawingOracles drawingOracles(const Manifest& m);
 

@@ -13,6 +13,7 @@
 #include "core/phase_clock.h"
 #include "runner/image_check.h"
 #include "runner/listing_oracles.h"
+#include "runner/oracle_store/oracle_store_key.h"
 
 namespace snell {
 namespace {
@@ -69,9 +70,20 @@ ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                        decalBindings(m, scene),
                        oracles.vertex.get(),
                        oracles.fragment.get()};
-  ++rendered_;
   const PhaseScope phase(Phase::Oracle);
-  return renderReferenceImage(input);
+  if (!store_ || oracles.identity.empty()) {
+    ++rendered_;
+    return renderReferenceImage(input);
+  }
+  const Digest key = referenceImageKey(oracles.identity, input);
+  if (std::optional<ReferenceImage> kept = store_->loadReference(key)) {
+    ++fromStore_;
+    return std::move(*kept);
+  }
+  ++rendered_;
+  ReferenceImage image = renderReferenceImage(input);
+  store_->saveReference(key, image);
+  return image;
 }
 
 ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,

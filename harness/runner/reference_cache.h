@@ -9,20 +9,24 @@
 #include <cstddef>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "core/case.h"
 #include "core/scene.h"
 #include "oracle/reference/reference_image.h"
+#include "runner/oracle_store/oracle_store.h"
 
 namespace snell {
 
 class ReferenceCache {
  public:
   ReferenceCache() = default;  // in memory only
-  // Shared with the other workers of the run `runId` through `outDir`.
-  ReferenceCache(std::filesystem::path outDir, std::string runId)
-      : outDir_(std::move(outDir)), runId_(std::move(runId)) {}
+  // Shared with the other workers of the run `runId` through `outDir`, and
+  // with later runs through `store` when there is one.
+  ReferenceCache(std::filesystem::path outDir, std::string runId,
+                 std::optional<OracleStore> store = std::nullopt)
+      : outDir_(std::move(outDir)), runId_(std::move(runId)), store_(std::move(store)) {}
 
   const ReferenceImage& get(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
 
@@ -30,8 +34,10 @@ class ReferenceCache {
   // writeReferenceImages) are written here, once for the whole run.
   bool writesImages() const { return !runId_.empty(); }
 
-  // How many references this cache rendered itself (the rest it read).
+  // How many references this cache rendered itself (the rest it read), and
+  // how many of those reads were from the store.
   std::size_t rendered() const { return rendered_; }
+  std::size_t fromStore() const { return fromStore_; }
 
  private:
   ReferenceImage render(const Case& c, const Scene& scene, const ResolvedBindings& bindings);
@@ -39,8 +45,10 @@ class ReferenceCache {
 
   std::filesystem::path outDir_;
   std::string runId_;
+  std::optional<OracleStore> store_;
   std::map<std::string, ReferenceImage> images_;
   std::size_t rendered_ = 0;
+  std::size_t fromStore_ = 0;
 };
 
 }  // namespace snell

@@ -49,6 +49,16 @@ class Supervision {
     for (std::size_t k = 0; k < tasks.size(); ++k) pending_.push_back(k);
   }
 
+  // 0 for the first backend the tasks name, 1 for the next, ...
+  std::size_t backendOrder(const std::string& backend) const {
+    std::vector<std::string> seen;
+    for (const Task& t : tasks_) {
+      if (t.backend == backend) return seen.size();
+      if (std::find(seen.begin(), seen.end(), t.backend) == seen.end()) seen.push_back(t.backend);
+    }
+    return 0;
+  }
+
   std::vector<CaseResult> run() {
     while (done_ < tasks_.size() && !stopped()) {
       for (Slot& slot : slots_)
@@ -68,12 +78,38 @@ class Supervision {
  private:
   bool stopped() const { return options_.stop && *options_.stop; }
 
-  // Prefers a case for the backend the slot's worker already loaded.
+  // Each worker start loads a driver (and, for images, the image module),
+  // so a slot keeps to the backend its worker loaded while that backend has
+  // cases left. A slot that needs a worker takes the backend the fewest
+  // other slots run: with as many slots as backends, one worker per
+  // backend. Every other backend (by first appearance) takes its cases
+  // from the end, so that two backends' workers reach the same case, and
+  // the lock on its shared reference image, only once, where they meet.
   void assign(Slot& slot) {
-    auto it = std::find_if(pending_.begin(), pending_.end(), [&](std::size_t k) {
-      return slot.worker && tasks_[k].backend == slot.backend;
-    });
-    if (it == pending_.end()) it = pending_.begin();
+    const auto ofBackend = [&](const std::string& backend) {
+      return [this, backend](std::size_t k) { return tasks_[k].backend == backend; };
+    };
+    std::string backend = slot.worker ? slot.backend : "";
+    if (backend.empty() ||
+        std::none_of(pending_.begin(), pending_.end(), ofBackend(slot.backend))) {
+      std::size_t fewest = slots_.size() + 1;
+      for (std::size_t k : pending_) {
+        const std::string& candidate = tasks_[k].backend;
+        const auto running = static_cast<std::size_t>(
+            std::count_if(slots_.begin(), slots_.end(), [&](const Slot& other) {
+              return &other != &slot && other.worker && other.backend == candidate;
+            }));
+        if (running < fewest) {
+          fewest = running;
+          backend = candidate;
+        }
+      }
+    }
+    const bool fromEnd = backendOrder(backend) % 2 == 1;
+    const auto it = fromEnd ? std::prev(std::find_if(pending_.rbegin(), pending_.rend(),
+                                                     ofBackend(backend))
+                                            .base())
+                            : std::find_if(pending_.begin(), pending_.end(), ofBackend(backend));
     const std::size_t index = *it;
     pending_.erase(it);
     const Task& task = tasks_[index];

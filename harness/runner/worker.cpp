@@ -47,12 +47,14 @@ int runWorker(const WorkerOptions& options) {
   for (const Case& c : cases) byId[c.id] = &c;
 
   std::unique_ptr<Backend> backend;  // loaded on the first case, not before
-  OracleCache oracles(options.oracleStore.empty()
-                          ? std::nullopt
-                          : std::optional<OracleStore>(OracleStore(options.oracleStore)));
+  const std::optional<OracleStore> store =
+      options.oracleStore.empty() ? std::nullopt
+                                  : std::optional<OracleStore>(OracleStore(options.oracleStore));
+  OracleCache oracles(store);
   SceneCache scenes(sceneSearchPath(options.shaders));
-  ReferenceCache references =
-      options.runId.empty() ? ReferenceCache() : ReferenceCache(options.outDir, options.runId);
+  ReferenceCache references = options.runId.empty()
+                                  ? ReferenceCache()
+                                  : ReferenceCache(options.outDir, options.runId, store);
   std::unique_ptr<CaseRunner> runner;
   double startSeconds = 0;  // charged to the first case
   for (std::string id; std::getline(std::cin, id);) {

@@ -125,6 +125,29 @@ TEST(StoredResultFormat, ADamagedShortOrForeignFileReadsAsNothing) {
   }
 }
 
+TEST(StoredResultFormat, AReferenceImageReadsBackAndAVectorFileIsNotOne) {
+  ReferenceImage reference;
+  reference.color = Image(3, 2);
+  for (std::size_t k = 0; k < reference.color.pixels.size(); ++k)
+    reference.color.pixels[k] = static_cast<float>(k) * 0.1f - 1.0f;
+  reference.color.pixels[5] = -0.0f;
+  reference.mask = {PixelMask::None, PixelMask::Silhouette, PixelMask::FaceEdge,
+                    PixelMask::Undefined, PixelMask::None, PixelMask::None};
+  const std::string bytes = encodeStoredReference(keyOf("k"), reference);
+  const auto back = decodeStoredReference(keyOf("k"), bytes);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->color.width, 3);
+  EXPECT_EQ(back->color.height, 2);
+  EXPECT_TRUE(sameBits(back->color.pixels, reference.color.pixels));
+  EXPECT_EQ(back->mask, reference.mask);
+  EXPECT_FALSE(decodeStoredReference(keyOf("k"), bytes.substr(0, bytes.size() - 1)));
+  EXPECT_FALSE(decodeStoredResult(keyOf("k"), bytes)) << "an image is not a vector result";
+  EXPECT_FALSE(decodeStoredReference(keyOf("k"), encodeStoredResult(keyOf("k"), awkwardResult())))
+      << "nor a vector result an image";
+  reference.mask.pop_back();  // a mask that does not cover the image
+  EXPECT_FALSE(decodeStoredReference(keyOf("k"), encodeStoredReference(keyOf("k"), reference)));
+}
+
 // One input, and every way to change it by a bit.
 struct KeyInput {
   UniformMap uniforms{{"eta", {ValueType::Float, {0.66f}}}};

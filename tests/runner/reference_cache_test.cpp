@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstring>
 #include <filesystem>
 
 #include "runner/case_runner.h"
@@ -67,6 +68,38 @@ TEST_F(SharedReference, ADamagedSharedFileIsRenderedAgain) {
   const ReferenceImage& b = reference(second);
   EXPECT_EQ(second.rendered(), 1u);
   EXPECT_EQ(a.color.pixels, b.color.pixels);
+}
+
+// Across runs through the oracle store: a later run reads the reference the
+// first one rendered, bit for bit, for a hand-written listing's drawing
+// oracle and for one derived from the listing's text.
+TEST_F(SharedReference, ALaterRunReadsTheStoredReferenceBitForBit) {
+  const OracleStore store(out_ / "store");
+  ReferenceCache first(out_, "run-1", store), later(out_, "run-2", store);
+  const ReferenceImage& a = reference(first);
+  EXPECT_EQ(first.rendered(), 1u);
+  EXPECT_EQ(first.fromStore(), 0u);
+  const ReferenceImage& b = reference(later);
+  EXPECT_EQ(later.rendered(), 0u);
+  EXPECT_EQ(later.fromStore(), 1u);
+  ASSERT_EQ(a.color.pixels.size(), b.color.pixels.size());
+  EXPECT_EQ(std::memcmp(a.color.pixels.data(), b.color.pixels.data(),
+                        a.color.pixels.size() * sizeof(float)),
+            0);
+  EXPECT_EQ(a.mask, b.mask);
+}
+
+TEST(DrawingOracleIdentity, DerivedOnesFollowTheListingsText) {
+  const std::vector<Manifest> reflection =
+      loadManifests(SNELL_SOURCE_ROOT "/shaders/learnopengl/reflection");
+  const std::vector<Manifest> refraction =
+      loadManifests(SNELL_SOURCE_ROOT "/shaders/learnopengl/refraction");
+  const DrawingOracles a = drawingOracles(reflection.at(0));
+  const DrawingOracles b = drawingOracles(refraction.at(0));
+  ASSERT_EQ(a.label, "derived");
+  EXPECT_FALSE(a.identity.empty());
+  EXPECT_NE(a.identity, b.identity);
+  EXPECT_NE(a.identity.find("reflection"), std::string::npos) << "names the listing's files";
 }
 
 }  // namespace

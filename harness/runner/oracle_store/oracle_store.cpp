@@ -47,16 +47,39 @@ fs::path OracleStore::pathOf(const Digest& key) const {
   return dir_ / hex.substr(0, 2) / (hex.substr(2) + kExtension);
 }
 
+std::optional<std::string> OracleStore::read(const Digest& key) const {
+  return readWhole(pathOf(key));
+}
+
+void OracleStore::markUsed(const Digest& key) const {
+  ::utimensat(AT_FDCWD, pathOf(key).c_str(), nullptr, 0);
+}
+
 std::optional<std::vector<OracleVarying>> OracleStore::load(const Digest& key) const {
-  const fs::path path = pathOf(key);
-  const std::optional<std::string> bytes = readWhole(path);
+  const std::optional<std::string> bytes = read(key);
   if (!bytes) return std::nullopt;
   std::optional<std::vector<OracleVarying>> result = decodeStoredResult(key, *bytes);
-  if (result) ::utimensat(AT_FDCWD, path.c_str(), nullptr, 0);  // used now
+  if (result) markUsed(key);
   return result;
 }
 
+std::optional<ReferenceImage> OracleStore::loadReference(const Digest& key) const {
+  const std::optional<std::string> bytes = read(key);
+  if (!bytes) return std::nullopt;
+  std::optional<ReferenceImage> reference = decodeStoredReference(key, *bytes);
+  if (reference) markUsed(key);
+  return reference;
+}
+
 bool OracleStore::save(const Digest& key, const std::vector<OracleVarying>& result) const {
+  return write(key, encodeStoredResult(key, result));
+}
+
+bool OracleStore::saveReference(const Digest& key, const ReferenceImage& reference) const {
+  return write(key, encodeStoredReference(key, reference));
+}
+
+bool OracleStore::write(const Digest& key, const std::string& bytes) const {
   const fs::path path = pathOf(key);
   std::error_code error;
   fs::create_directories(path.parent_path(), error);
@@ -66,7 +89,6 @@ bool OracleStore::save(const Digest& key, const std::vector<OracleVarying>& resu
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) return false;
-    const std::string bytes = encodeStoredResult(key, result);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     out.flush();
     if (!out) {

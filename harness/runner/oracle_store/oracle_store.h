@@ -19,6 +19,7 @@
 
 #include "core/content_hash.h"
 #include "core/expected_values.h"
+#include "oracle/reference/reference_image.h"
 
 namespace snell {
 
@@ -33,12 +34,17 @@ class OracleStore {
   // The result stored under `key`, or nothing (absent, unreadable,
   // damaged). A hit marks the file as used now, for the trim.
   std::optional<std::vector<OracleVarying>> load(const Digest& key) const;
+  std::optional<ReferenceImage> loadReference(const Digest& key) const;
   // False when it could not be written (a full disk, a read-only folder):
   // the result is then computed again next time, nothing else changes.
   bool save(const Digest& key, const std::vector<OracleVarying>& result) const;
+  bool saveReference(const Digest& key, const ReferenceImage& reference) const;
 
  private:
   std::filesystem::path pathOf(const Digest& key) const;
+  std::optional<std::string> read(const Digest& key) const;
+  void markUsed(const Digest& key) const;
+  bool write(const Digest& key, const std::string& bytes) const;
   std::filesystem::path dir_;
 };
 

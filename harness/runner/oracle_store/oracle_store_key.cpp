@@ -13,6 +13,30 @@ void addArray(ContentHash& hash, const std::vector<T>& values) {
   hash.addBytes(values.data(), values.size() * sizeof(T));
 }
 
+// What an oracle reads: uniforms, constants and per-invocation inputs.
+void addValues(ContentHash& hash, const UniformMap& uniforms, const ConstantMap& constants,
+               const AttributeMap& attributes, std::size_t count) {
+  hash.add(static_cast<std::uint64_t>(count));
+  hash.add(static_cast<std::uint64_t>(uniforms.size()));
+  for (const auto& [name, value] : uniforms) {
+    hash.add(name);
+    hash.add(value.type);
+    addArray(hash, value.data);
+  }
+  hash.add(static_cast<std::uint64_t>(constants.size()));
+  for (const auto& [name, value] : constants) {
+    hash.add(name);
+    hash.add(value);
+  }
+  hash.add(static_cast<std::uint64_t>(attributes.size()));
+  for (const auto& [name, stream] : attributes) {
+    hash.add(name);
+    hash.add(stream.name);
+    hash.add(stream.components);
+    addArray(hash, stream.data);
+  }
+}
+
 }  // namespace
 
 Digest oracleResultKey(std::string_view identity, const OracleInput& input) {
@@ -21,24 +45,40 @@ Digest oracleResultKey(std::string_view identity, const OracleInput& input) {
   hash.add(kStoredResultFormat);
   hash.add(identity);
   hash.add(input.rules);
-  hash.add(static_cast<std::uint64_t>(input.vertexCount));
-  hash.add(static_cast<std::uint64_t>(input.uniforms.size()));
-  for (const auto& [name, value] : input.uniforms) {
+  addValues(hash, input.uniforms, input.constants, input.attributes, input.vertexCount);
+  return hash.finish();
+}
+
+Digest referenceImageKey(std::string_view identity, const ReferenceInput& input) {
+  ContentHash hash;
+  hash.add(std::string_view("snell reference image"));
+  hash.add(kStoredResultFormat);
+  hash.add(identity);
+  hash.add(std::string_view(input.oracle));
+  addValues(hash, input.uniforms, input.constants, input.attributes, input.vertexCount);
+  addArray(hash, input.indices);
+  hash.add(static_cast<std::uint64_t>(input.cubeMaps.size()));
+  for (const auto& [name, cube] : input.cubeMaps) {
     hash.add(name);
-    hash.add(value.type);
-    addArray(hash, value.data);
+    hash.add(cube != nullptr);
+    if (!cube) continue;
+    hash.add(cube->size);
+    hash.add(cube->filter);
+    hash.add(cube->seamless);
+    for (const std::vector<float>& face : cube->faces) addArray(hash, face);
   }
-  hash.add(static_cast<std::uint64_t>(input.constants.size()));
-  for (const auto& [name, value] : input.constants) {
+  hash.add(input.width);
+  hash.add(input.height);
+  for (float c : input.clearColor) hash.add(c);
+  hash.add(input.cullBackFaces);
+  hash.add(static_cast<std::uint64_t>(input.textures2D.size()));
+  for (const auto& [name, image] : input.textures2D) {
     hash.add(name);
-    hash.add(value);
-  }
-  hash.add(static_cast<std::uint64_t>(input.attributes.size()));
-  for (const auto& [name, stream] : input.attributes) {
-    hash.add(name);
-    hash.add(stream.name);
-    hash.add(stream.components);
-    addArray(hash, stream.data);
+    hash.add(image != nullptr);
+    if (!image) continue;
+    hash.add(image->width);
+    hash.add(image->height);
+    addArray(hash, image->pixels);
   }
   return hash.finish();
 }

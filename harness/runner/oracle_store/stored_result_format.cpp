@@ -1,5 +1,6 @@
 #include "runner/oracle_store/stored_result_format.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -164,23 +165,23 @@ std::optional<std::vector<OracleVarying>> decodePayload(std::string_view payload
   return result;
 }
 
+enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2 };
+
 struct Header {
   char magic[8];
   std::uint32_t format;
-  std::uint32_t reserved;
+  Kind kind;
   Digest key;
   Digest payloadDigest;
   std::uint64_t payloadSize;
 };
 static_assert(std::is_trivially_copyable_v<Header>);
 
-}  // namespace
-
-std::string encodeStoredResult(const Digest& key, const std::vector<OracleVarying>& result) {
-  const std::string payload = encodePayload(result);
+std::string withHeader(const Digest& key, Kind kind, const std::string& payload) {
   Header header{};
   std::memcpy(header.magic, kMagic, sizeof kMagic);
   header.format = kStoredResultFormat;
+  header.kind = kind;
   header.key = key;
   header.payloadDigest = digestOf(payload);
   header.payloadSize = payload.size();
@@ -188,17 +189,57 @@ std::string encodeStoredResult(const Digest& key, const std::vector<OracleVaryin
   return bytes + payload;
 }
 
-std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
-                                                             std::string_view bytes) {
+// The payload, when the header is this format's, of this kind and key, and
+// the payload is whole.
+std::optional<std::string_view> payloadOf(const Digest& key, Kind kind, std::string_view bytes) {
   Header header;
   if (bytes.size() < sizeof header) return std::nullopt;
   std::memcpy(&header, bytes.data(), sizeof header);
   const std::string_view payload = bytes.substr(sizeof header);
   if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 ||
-      header.format != kStoredResultFormat || !(header.key == key) ||
+      header.format != kStoredResultFormat || header.kind != kind || !(header.key == key) ||
       header.payloadSize != payload.size() || !(digestOf(payload) == header.payloadDigest))
     return std::nullopt;
-  return decodePayload(payload);
+  return payload;
+}
+
+}  // namespace
+
+std::string encodeStoredResult(const Digest& key, const std::vector<OracleVarying>& result) {
+  return withHeader(key, Kind::Vectors, encodePayload(result));
+}
+
+std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
+                                                             std::string_view bytes) {
+  const std::optional<std::string_view> payload = payloadOf(key, Kind::Vectors, bytes);
+  if (!payload) return std::nullopt;
+  return decodePayload(*payload);
+}
+
+std::string encodeStoredReference(const Digest& key, const ReferenceImage& reference) {
+  Writer w;
+  w.put(static_cast<std::int32_t>(reference.color.width));
+  w.put(static_cast<std::int32_t>(reference.color.height));
+  w.putArray(reference.color.pixels);
+  w.putArray(reference.mask);
+  return withHeader(key, Kind::ReferenceImage, w.take());
+}
+
+std::optional<ReferenceImage> decodeStoredReference(const Digest& key, std::string_view bytes) {
+  const std::optional<std::string_view> payload = payloadOf(key, Kind::ReferenceImage, bytes);
+  if (!payload) return std::nullopt;
+  Reader r(*payload);
+  ReferenceImage reference;
+  reference.color.width = r.get<std::int32_t>();
+  reference.color.height = r.get<std::int32_t>();
+  reference.color.pixels = r.getArray<float>();
+  reference.mask = r.getArray<PixelMask>();
+  const std::size_t area = static_cast<std::size_t>(std::max(reference.color.width, 0)) *
+                           static_cast<std::size_t>(std::max(reference.color.height, 0));
+  if (!r.ok() || !r.atEnd() || reference.color.pixels.size() != area * 4 ||
+      reference.mask.size() != area)
+    return std::nullopt;
+  return reference;
 }
 
 }  // namespace snell
