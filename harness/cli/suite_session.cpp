@@ -214,10 +214,13 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   // The images across APIs are compared here once the workers are done; the
   // image module (a third of a second of loading) opens meanwhile, so that
   // comparison does not wait for it. A module that does not open is said
-  // by that comparison, which asks again.
+  // by that comparison, which asks again. With an oracle store the
+  // comparisons of an earlier run on the same images need no module, so
+  // it opens only when one is missing.
   std::future<void> imagesReady;
-  if (std::any_of(run.cases.begin(), run.cases.end(),
-                  [](const Case& c) { return c.spec.has("image"); }))
+  if (run.oracleStore.empty() && std::any_of(run.cases.begin(), run.cases.end(), [](const Case& c) {
+        return c.spec.has("image");
+      }))
     imagesReady = std::async(std::launch::async, [] {
       try {
         imageLibrary();
@@ -259,7 +262,11 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   }
   if (imagesReady.valid()) imagesReady.wait();
   const auto crossApiStart = std::chrono::steady_clock::now();
-  checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results);
+  const std::optional<OracleStore> store =
+      run.oracleStore.empty() ? std::nullopt
+                              : std::optional<OracleStore>(OracleStore(run.oracleStore));
+  checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results,
+                  store ? &*store : nullptr);
   run.crossApiSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - crossApiStart).count();
   // The streamed file is in completion order; the kept one is in task order,

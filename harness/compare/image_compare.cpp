@@ -1,12 +1,16 @@
 #include "compare/image_compare.h"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "compare/image_library.h"
+#include "core/content_hash.h"
 #include "core/errors.h"
+#include "core/written_mark.h"
 
 namespace snell {
 namespace {
@@ -94,11 +98,23 @@ void writeDifferenceHeatMap(const std::filesystem::path& path, const Image& obse
                          double(std::abs(observed.pixels[p * 4 + c] - expected.pixels[p * 4 + c])));
     difference[p] = masked(mask, p) ? -1.0f : static_cast<float>(std::min(1.0, largest / scale));
   }
+  ContentHash hash;
+  hash.add(std::string_view("heat map"));
+  hash.add(std::string_view(imageWriterIdentity()));
+  hash.add(observed.width);
+  hash.add(observed.height);
+  hash.addBytes(difference.data(), difference.size() * sizeof(float));
+  const Digest digest = hash.finish();
+  if (writtenFrom(path, digest)) return;  // this very file, written before
+  std::filesystem::path temporary = path;
+  temporary += fmt::format(".tmp{}{}", getpid(), path.extension().string());
   SnellImageError error;
-  if (imageLibrary().writeHeatMap(path.c_str(), difference.data(), observed.width, observed.height,
-                                  &error) != SNELL_IMAGE_OK)
+  if (imageLibrary().writeHeatMap(temporary.c_str(), difference.data(), observed.width,
+                                  observed.height, &error) != SNELL_IMAGE_OK)
     throw SetupError(
         fmt::format("{}: cannot write the heat map ({})", path.string(), error.message));
+  markWrittenFrom(temporary, digest);
+  std::filesystem::rename(temporary, path);
 }
 
 }  // namespace snell

@@ -6,7 +6,9 @@
 #include <new>
 
 #include "compare/image_library.h"
+#include "core/content_hash.h"
 #include "core/errors.h"
+#include "core/written_mark.h"
 
 namespace snell {
 
@@ -46,12 +48,22 @@ Image readImage(const fs::path& path) {
 
 void writeImageAtomically(const fs::path& path, const Image& image) {
   const bool png = path.extension() == ".png";
+  ContentHash hash;
+  hash.add(std::string_view("image file"));
+  hash.add(std::string_view(imageWriterIdentity()));
+  hash.add(png);
+  hash.add(image.width);
+  hash.add(image.height);
+  hash.addBytes(image.pixels.data(), image.pixels.size() * sizeof(float));
+  const Digest digest = hash.finish();
+  if (writtenFrom(path, digest)) return;  // this very file, written before
   fs::path temporary = path;
   temporary += fmt::format(".tmp{}{}", getpid(), path.extension().string());
   SnellImageError error;
   if (imageLibrary().write(temporary.c_str(), image.pixels.data(), image.width, image.height, 4,
                            png ? SNELL_IMAGE_SRGB8 : SNELL_IMAGE_FLOAT, &error) != SNELL_IMAGE_OK)
     throw SetupError(fmt::format("{}: cannot write ({})", path.string(), error.message));
+  markWrittenFrom(temporary, digest);
   fs::rename(temporary, path);
 }
 

@@ -1,10 +1,12 @@
 #include "compare/image_library.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/build_id.h"
 #include "core/errors.h"
 #include "core/shared_library.h"
 
@@ -42,6 +44,20 @@ std::vector<std::string> imageLibraryCandidates() {
   const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) candidates.push_back((executable.parent_path() / kFileName).string());
   return candidates;
+}
+
+const std::string& imageWriterIdentity() {
+  static const std::string identity = [] {
+    std::string text = "snell " + buildIdContaining(reinterpret_cast<const void*>(&imageLibrary));
+    for (const std::string& candidate : imageLibraryCandidates()) {
+      struct stat info {};
+      if (::stat(candidate.c_str(), &info) != 0) continue;
+      return fmt::format("{} module {} {} {}.{}", text, candidate, info.st_size,
+                         info.st_mtim.tv_sec, info.st_mtim.tv_nsec);
+    }
+    return text + " no module";
+  }();
+  return identity;
 }
 
 const SnellImageLibraryFunctions& imageLibrary() {

@@ -21,6 +21,12 @@ const SnellImageLibraryFunctions& imageLibrary();
 // The files imageLibrary() tries, in order.
 std::vector<std::string> imageLibraryCandidates();
 
+// What decides the bytes of an image file written here, known without
+// opening the module: the module file that would be opened (its path, size
+// and time) and the build of the code that prepares the pixels. Part of the
+// digest a written file is marked with (core/written_mark.h).
+const std::string& imageWriterIdentity();
+
 // Opens the first of `candidates` that loads and checks that it is the
 // module, of this interface version; no caching. Throws SetupError.
 const SnellImageLibraryFunctions& openImageLibrary(const std::vector<std::string>& candidates);

@@ -33,12 +33,13 @@ bool hasAnyGolden(const fs::path& root, const std::string& backend) {
 }
 
 Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
-                  int expectedWidth, int expectedHeight, const std::string& blessCommand) {
+                  int expectedWidth, int expectedHeight, const std::string& blessCommand,
+                  const std::function<Image(const fs::path&)>& read) {
   const GoldenFiles files = goldenFiles(root, caseId, backend);
   const std::string hint = fmt::format("check it, or bless a new one with `{}`", blessCommand);
   Golden golden;
   try {
-    golden.image = readImage(files.image);
+    golden.image = read(files.image);
   } catch (const UsageError& error) {
     throw UsageError(fmt::format("golden {}; {}", error.what(), hint));
   }

@@ -3,9 +3,11 @@
 // (compared), .png (for people) and .json (the driver that produced it and
 // the tolerance in force). Goldens change only through `snell bless`.
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "compare/image_io.h"
 #include "core/image.h"
 
 namespace snell {
@@ -28,10 +30,12 @@ bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend)
 
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
 // truncated, wrong size) and what to do: check it, or run `blessCommand`
-// (the caller's, since only it knows the flags the user ran with).
-Golden readGolden(const std::filesystem::path& root, const std::string& caseId,
-                  const std::string& backend, int expectedWidth, int expectedHeight,
-                  const std::string& blessCommand);
+// (the caller's, since only it knows the flags the user ran with). The
+// image file is read by `read` (readImage, or one that keeps its pixels).
+Golden readGolden(
+    const std::filesystem::path& root, const std::string& caseId, const std::string& backend,
+    int expectedWidth, int expectedHeight, const std::string& blessCommand,
+    const std::function<Image(const std::filesystem::path&)>& read = readImage);
 
 // Writes the three files, each atomically (temporary file, then rename).
 void writeGolden(const std::filesystem::path& root, const std::string& caseId,

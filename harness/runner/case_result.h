@@ -29,7 +29,9 @@ struct CaseResult {
   // The oracle results the case computed or read (vectors, and a reference
   // image it rendered or read from the store, not one it shared with the
   // run's other worker), and how many of them an earlier run had computed
-  // (read from the oracle store, runner/oracle_store).
+  // (read from the oracle store, runner/oracle_store). Like the times, they
+  // say how the run went, not what it found: which worker renders a shared
+  // reference first varies from run to run.
   int oracleResults = 0;
   int oracleStored = 0;
   // The case's wall time by phase, which add up to `seconds`; `start` comes

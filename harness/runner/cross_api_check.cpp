@@ -8,11 +8,12 @@
 #include "compare/image_io.h"
 #include "core/errors.h"
 #include "runner/image_check.h"
+#include "runner/oracle_store/image_results.h"
 
 namespace snell {
 
 void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path& outDir,
-                     std::vector<CaseResult>& results) {
+                     std::vector<CaseResult>& results, const OracleStore* store) {
   std::map<std::string, std::map<std::string, CaseResult*>> byCase;
   for (CaseResult& r : results) byCase[r.caseId][r.backend] = &r;
   const auto renderedAndWithinSpec = [](const CaseResult& r) {
@@ -32,10 +33,10 @@ void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path
         ImageComparison comparison;
         const std::string against = "other-backend:" + a.backend + "/" + b.backend;
         try {
-          comparison =
-              compareImages(against, readImage(renderedImagePath(outDir, c.id, b.backend)),
-                            readImage(renderedImagePath(outDir, c.id, a.backend)),
-                            maskFromImage(readImage(maskImagePath(outDir, c.id))), c.spec.image);
+          comparison = compareImagesKept(
+              store, against, readImageKept(store, renderedImagePath(outDir, c.id, b.backend)),
+              readImageKept(store, renderedImagePath(outDir, c.id, a.backend)),
+              maskFromImage(readImageKept(store, maskImagePath(outDir, c.id))), c.spec.image);
         } catch (const UsageError& error) {
           comparison.against = against;
           comparison.verdict = ImageVerdict::Fail;

@@ -8,12 +8,14 @@
 
 #include "core/case.h"
 #include "runner/case_result.h"
+#include "runner/oracle_store/oracle_store.h"
 
 namespace snell {
 
 // Adds an "other-backend:A/B" comparison to both results of every pair of
-// backends that rendered an image case into `outDir`.
+// backends that rendered an image case into `outDir`. With a store, the
+// images read and the comparisons are kept there (runner/oracle_store).
 void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path& outDir,
-                     std::vector<CaseResult>& results);
+                     std::vector<CaseResult>& results, const OracleStore* store = nullptr);
 
 }  // namespace snell

@@ -6,6 +6,7 @@
 #include "core/errors.h"
 #include "core/phase_clock.h"
 #include "golden/golden_store.h"
+#include "runner/oracle_store/image_results.h"
 
 namespace snell {
 
@@ -67,10 +68,11 @@ RenderJob sceneRenderJob(const Manifest& m, const Scene& scene, const ResolvedBi
 
 namespace {
 
-ImageComparison compareTimed(const std::string& against, const Image& image, const Image& other,
+ImageComparison compareTimed(const OracleStore* store, const std::string& against,
+                             const Image& image, const Image& other,
                              const std::vector<PixelMask>& mask, const ImageTolerance& rules) {
   const PhaseScope phase(Phase::Compare);
-  return compareImages(against, image, other, mask, rules);
+  return compareImagesKept(store, against, image, other, mask, rules);
 }
 
 void writeHeatMapTimed(const fs::path& path, const Image& image, const Image& other,
@@ -117,8 +119,9 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
     writeImageAtomically(dir / (name + ".png"), outcome.image);
     if (!referenceWritten) writeReferenceImages(options.outDir, c.id, reference);
   }
-  check.comparisons.push_back(
-      compareTimed("reference", outcome.image, reference.color, reference.mask, c.spec.image));
+  const OracleStore* store = options.store ? &*options.store : nullptr;
+  check.comparisons.push_back(compareTimed(store, "reference", outcome.image, reference.color,
+                                           reference.mask, c.spec.image));
   writeHeatMapTimed(dir / (name + "-vs-reference.png"), outcome.image, reference.color,
                     reference.mask, c.spec.image.fail);
 
@@ -133,10 +136,11 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
       const Golden golden = [&] {
         const PhaseScope phase(Phase::Images);
         return readGolden(options.goldenDir, c.id, goldenKey, scene.width, scene.height,
-                          blessCommand(name, options.blessFlags, c.id));
+                          blessCommand(name, options.blessFlags, c.id),
+                          [&](const fs::path& path) { return readImageKept(store, path); });
       }();
-      check.comparisons.push_back(
-          compareTimed("golden", outcome.image, golden.image, reference.mask, c.spec.image));
+      check.comparisons.push_back(compareTimed(store, "golden", outcome.image, golden.image,
+                                               reference.mask, c.spec.image));
       writeHeatMapTimed(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
                         reference.mask, c.spec.image.fail);
     } catch (const UsageError& error) {

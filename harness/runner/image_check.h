@@ -5,6 +5,7 @@
 // made by the supervisor (cross_api_check.h).
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "compare/image_compare.h"
 #include "core/case.h"
 #include "oracle/reference/reference_image.h"
+#include "runner/oracle_store/oracle_store.h"
 #include "runner/reference_cache.h"
 
 namespace snell {
@@ -23,6 +25,8 @@ struct ImageCheckOptions {
   // The user's own `--shaders`/`--golden` flags, repeated in the bless
   // command a missing or broken golden's message advises.
   std::string blessFlags = "";  // NOLINT(readability-redundant-string-init)
+  // Where decoded goldens and comparisons are kept across runs; empty: nowhere.
+  std::optional<OracleStore> store = std::nullopt;
 };
 
 // `snell bless` for one case on one backend, with the user's flags.

@@ -65,7 +65,8 @@ int runWorker(const WorkerOptions& options) {
       backend = makeBackend(entry.name, backendOptions(options));
       runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
                                             ImageCheckOptions{options.outDir, options.goldenDir,
-                                                              entry.goldenKey, options.blessFlags});
+                                                              entry.goldenKey, options.blessFlags,
+                                                              store});
       if (options.spawnedAtNs > 0)
         startSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch() -

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "snell_process.h"
 
@@ -59,6 +60,35 @@ TEST_F(OracleCacheCli, AFolderThatCannotBeMadeIsSaidAndTheRunGoesOn) {
   ASSERT_EQ(outcome.code, 0) << outcome.out;
   EXPECT_NE(outcome.out.find("cannot keep oracle results here"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("none kept"), std::string::npos) << outcome.out;
+}
+
+// A run on the same driver as the one before needs no image module at all:
+// its pictures, comparisons and decoded images are what that run kept. The
+// module is replaced by a file of the same name, size and time that cannot
+// be opened (so the stored results stay keyed to it): the kept run passes
+// as before, and one that keeps nothing cannot compare an image.
+TEST_F(OracleCacheCli, ARunAgainOpensNoImageModule) {
+  fs::create_directories(dir_);
+  const fs::path module = dir_ / "libsnell_image_library.so";
+  fs::copy_file(SNELL_IMAGE_LIBRARY_PATH, module);
+  const auto time = fs::last_write_time(module);
+  const std::string env = fmt::format("SNELL_IMAGE_LIBRARY={}", module.string());
+  const std::string store = (dir_ / "store").string();
+  const std::string args = fmt::format(
+      "run --backend gl,vk --filter 'orange-book/14.1-fresnel/sphere' --out {} --json {} ",
+      (dir_ / "out").string(), (dir_ / "results.jsonl").string());
+  const auto first = runSnell(args + "--oracle-cache " + store, env);
+  ASSERT_EQ(first.code, 0) << first.out;
+  const std::uintmax_t size = fs::file_size(module);
+  std::ofstream(module, std::ios::binary | std::ios::trunc) << std::string(size, '\0');
+  fs::last_write_time(module, time);
+  const auto again = runSnell(args + "--oracle-cache " + store, env);
+  EXPECT_EQ(again.code, 0) << again.out;
+  EXPECT_NE(again.out.find("2 Pass"), std::string::npos) << again.out;
+  EXPECT_NE(again.out.find("0 computed"), std::string::npos) << again.out;
+  const auto without = runSnell(args + "--oracle-cache off", env);
+  EXPECT_NE(without.code, 0) << "the replaced module really cannot be opened:\n" << without.out;
+  EXPECT_NE(without.out.find("libsnell_image_library.so"), std::string::npos) << without.out;
 }
 
 }  // namespace

@@ -2,8 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <thread>
+
+#include "compare/image_io.h"
 
 namespace snell {
 namespace {
@@ -90,6 +96,42 @@ TEST(ImageCompare, HeatMapIsWritten) {
   writeDifferenceHeatMap(path, observed, flat(0.5f), {}, 0.004);
   EXPECT_GT(std::filesystem::file_size(path), 0u);
   std::filesystem::remove(path);
+}
+
+// The same picture is not encoded twice: a file written from the same
+// pixels (its mark, core/written_mark.h) is left as it is; other pixels,
+// or a file changed since, are written.
+TEST(ImageFiles, TheSamePicturesAreWrittenOnce) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("snell-written-once-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path exr = dir / "image.exr", png = dir / "image.png", heat = dir / "heat.png";
+  Image observed = flat(0.5f);
+  observed.at(1, 1)[0] = 0.6f;
+  const auto write = [&] {
+    writeImageAtomically(exr, observed);
+    writeImageAtomically(png, observed);
+    writeDifferenceHeatMap(heat, observed, flat(0.5f), {}, 0.004);
+  };
+  write();
+  const auto past = fs::file_time_type::clock::now() - std::chrono::hours(2);
+  // Written again from the same pixels: untouched, but a file whose
+  // mark no longer matches its time is written.
+  for (const fs::path& f : {exr, png, heat}) fs::last_write_time(f, past);
+  write();
+  for (const fs::path& f : {exr, png, heat})
+    EXPECT_GT(fs::last_write_time(f), past) << f << " was changed since its mark: written again";
+  const auto then = fs::last_write_time(exr);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  write();
+  EXPECT_EQ(fs::last_write_time(exr), then) << "the same pixels: not written again";
+  EXPECT_EQ(readImage(exr).pixels, observed.pixels);
+  observed.at(2, 2)[1] = 0.25f;
+  write();
+  EXPECT_GT(fs::last_write_time(exr), then) << "other pixels";
+  EXPECT_EQ(readImage(exr).pixels, observed.pixels);
+  fs::remove_all(dir);
 }
 
 }  // namespace

@@ -18,6 +18,9 @@
 #include "core/content_hash.h"
 #include "runner/case_runner.h"
 #include "runner/oracle_cache.h"
+#include "compare/image_io.h"
+#include "core/errors.h"
+#include "runner/oracle_store/image_results.h"
 #include "runner/oracle_store/oracle_store.h"
 #include "runner/oracle_store/oracle_store_key.h"
 #include "runner/oracle_store/stored_result_format.h"
@@ -331,6 +334,79 @@ TEST_F(StoreFolder, AListingsOraclesReadBackAsComputed) {
       EXPECT_EQ(reader.stored(), 1);
       expectIdentical(read, computed);
     }
+}
+
+// The digest a stored file is named by (dir/ab/cdef....result).
+Digest digestOfFile(const fs::path& file) {
+  const std::string hex = file.parent_path().filename().string() + file.stem().string();
+  Digest d;
+  for (std::size_t k = 0; k < d.bytes.size(); ++k)
+    d.bytes[k] = static_cast<std::uint8_t>(std::stoi(hex.substr(2 * k, 2), nullptr, 16));
+  return d;
+}
+
+Image gradient(float scale) {
+  Image image(4, 3);
+  for (std::size_t k = 0; k < image.pixels.size(); ++k)
+    image.pixels[k] = static_cast<float>(k) * scale;
+  return image;
+}
+
+TEST_F(StoreFolder, ADecodedImageIsKeptByTheFilesBytes) {
+  fs::create_directories(dir_);
+  const fs::path exr = dir_ / "image.exr";
+  writeImageAtomically(exr, gradient(0.01f));
+  const OracleStore store(dir_ / "store");
+  EXPECT_EQ(readImageKept(&store, exr).pixels, gradient(0.01f).pixels);
+  ASSERT_EQ(files().size(), 2u) << "the image and one stored result";
+  EXPECT_EQ(readImageKept(&store, exr).pixels, gradient(0.01f).pixels);
+  EXPECT_EQ(files().size(), 2u) << "read from the store";
+  // What the store holds is what is given: a result put there by hand
+  // under the file's key comes back, so the store is really consulted.
+  fs::path stored;
+  for (const fs::path& f : files())
+    if (f.extension() == ".result") stored = f;
+  std::ofstream(stored, std::ios::binary | std::ios::trunc)
+      << encodeStoredImage(digestOfFile(stored), gradient(0.5f));
+  EXPECT_EQ(readImageKept(&store, exr).pixels, gradient(0.5f).pixels);
+  writeImageAtomically(exr, gradient(0.02f));  // other bytes: another key
+  EXPECT_EQ(readImageKept(&store, exr).pixels, gradient(0.02f).pixels);
+  EXPECT_EQ(readImageKept(nullptr, exr).pixels, gradient(0.02f).pixels);
+  EXPECT_THROW(readImageKept(&store, dir_ / "missing.exr"), UsageError);
+}
+
+TEST_F(StoreFolder, AComparisonIsKeptByItsImagesAndThresholds) {
+  const OracleStore store(dir_);
+  Image observed = gradient(0.01f);
+  observed.pixels[5] += 0.1f;
+  const ImageTolerance rules{0.004, 0.002, 0.0, 0.05};
+  const ImageComparison direct = compareImages("golden", observed, gradient(0.01f), {}, rules);
+  ASSERT_EQ(direct.verdict, ImageVerdict::Fail);
+  const auto same = [&](const ImageComparison& c) {
+    EXPECT_EQ(c.against, direct.against);
+    EXPECT_EQ(c.verdict, direct.verdict);
+    EXPECT_EQ(c.maxError, direct.maxError);
+    EXPECT_EQ(c.meanError, direct.meanError);
+    EXPECT_EQ(c.maxX, direct.maxX);
+    EXPECT_EQ(c.maxY, direct.maxY);
+    EXPECT_EQ(c.failed, direct.failed);
+    EXPECT_EQ(c.compared, direct.compared);
+    EXPECT_EQ(c.masked, direct.masked);
+  };
+  same(compareImagesKept(&store, "golden", observed, gradient(0.01f), {}, rules));
+  ASSERT_EQ(files().size(), 1u);
+  same(compareImagesKept(&store, "golden", observed, gradient(0.01f), {}, rules));
+  EXPECT_EQ(files().size(), 1u) << "read from the store";
+  const ImageTolerance looser{0.5, 0.4, 0.0, 1.0};
+  EXPECT_EQ(compareImagesKept(&store, "golden", observed, gradient(0.01f), {}, looser).verdict,
+            ImageVerdict::Pass)
+      << "other thresholds: another key";
+  std::vector<PixelMask> mask(12, PixelMask::None);
+  mask[1] = PixelMask::Silhouette;  // pixel 1 holds channel 5
+  EXPECT_EQ(compareImagesKept(&store, "golden", observed, gradient(0.01f), mask, rules).verdict,
+            ImageVerdict::Pass)
+      << "another mask: another key";
+  EXPECT_EQ(files().size(), 3u);
 }
 
 }  // namespace

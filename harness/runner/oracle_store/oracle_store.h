@@ -40,11 +40,15 @@ class OracleStore {
   bool save(const Digest& key, const std::vector<OracleVarying>& result) const;
   bool saveReference(const Digest& key, const ReferenceImage& reference) const;
 
- private:
-  std::filesystem::path pathOf(const Digest& key) const;
+  // The same for any kind of result, in bytes of stored_result_format.h:
+  // read() gives the file's bytes as they are (decoding checks them), and
+  // markUsed() is for a hit.
   std::optional<std::string> read(const Digest& key) const;
   void markUsed(const Digest& key) const;
   bool write(const Digest& key, const std::string& bytes) const;
+
+ private:
+  std::filesystem::path pathOf(const Digest& key) const;
   std::filesystem::path dir_;
 };
 

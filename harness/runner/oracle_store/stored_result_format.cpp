@@ -165,7 +165,23 @@ std::optional<std::vector<OracleVarying>> decodePayload(std::string_view payload
   return result;
 }
 
-enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2 };
+enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2, Image = 3, Comparison = 4 };
+
+void putImage(Writer& w, const Image& image) {
+  w.put(static_cast<std::int32_t>(image.width));
+  w.put(static_cast<std::int32_t>(image.height));
+  w.putArray(image.pixels);
+}
+
+// False when the pixels do not cover width x height.
+bool getImage(Reader& r, Image& image) {
+  image.width = r.get<std::int32_t>();
+  image.height = r.get<std::int32_t>();
+  image.pixels = r.getArray<float>();
+  return image.width >= 0 && image.height >= 0 &&
+         image.pixels.size() ==
+             static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4;
+}
 
 struct Header {
   char magic[8];
@@ -218,9 +234,7 @@ std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
 
 std::string encodeStoredReference(const Digest& key, const ReferenceImage& reference) {
   Writer w;
-  w.put(static_cast<std::int32_t>(reference.color.width));
-  w.put(static_cast<std::int32_t>(reference.color.height));
-  w.putArray(reference.color.pixels);
+  putImage(w, reference.color);
   w.putArray(reference.mask);
   return withHeader(key, Kind::ReferenceImage, w.take());
 }
@@ -230,16 +244,67 @@ std::optional<ReferenceImage> decodeStoredReference(const Digest& key, std::stri
   if (!payload) return std::nullopt;
   Reader r(*payload);
   ReferenceImage reference;
-  reference.color.width = r.get<std::int32_t>();
-  reference.color.height = r.get<std::int32_t>();
-  reference.color.pixels = r.getArray<float>();
+  const bool whole = getImage(r, reference.color);
   reference.mask = r.getArray<PixelMask>();
-  const std::size_t area = static_cast<std::size_t>(std::max(reference.color.width, 0)) *
-                           static_cast<std::size_t>(std::max(reference.color.height, 0));
-  if (!r.ok() || !r.atEnd() || reference.color.pixels.size() != area * 4 ||
-      reference.mask.size() != area)
+  if (!whole || !r.ok() || !r.atEnd() ||
+      reference.mask.size() != reference.color.pixels.size() / 4)
     return std::nullopt;
   return reference;
+}
+
+std::string encodeStoredImage(const Digest& key, const Image& image) {
+  Writer w;
+  putImage(w, image);
+  return withHeader(key, Kind::Image, w.take());
+}
+
+std::optional<Image> decodeStoredImage(const Digest& key, std::string_view bytes) {
+  const std::optional<std::string_view> payload = payloadOf(key, Kind::Image, bytes);
+  if (!payload) return std::nullopt;
+  Reader r(*payload);
+  Image image;
+  if (!getImage(r, image) || !r.ok() || !r.atEnd()) return std::nullopt;
+  return image;
+}
+
+std::string encodeStoredComparison(const Digest& key, const ImageComparison& c) {
+  Writer w;
+  w.put(c.against);
+  w.put(static_cast<std::uint8_t>(c.verdict));
+  for (double v : {c.maxError, c.meanError, c.rmsError, c.psnr}) w.put(v);
+  w.put(static_cast<std::int32_t>(c.maxX));
+  w.put(static_cast<std::int32_t>(c.maxY));
+  for (std::size_t n : {c.compared, c.failed, c.warned}) w.put(static_cast<std::uint64_t>(n));
+  w.put(static_cast<std::uint64_t>(c.masked.size()));
+  for (const auto& [reason, count] : c.masked) {
+    w.put(reason);
+    w.put(static_cast<std::uint64_t>(count));
+  }
+  w.put(c.problem);
+  return withHeader(key, Kind::Comparison, w.take());
+}
+
+std::optional<ImageComparison> decodeStoredComparison(const Digest& key, std::string_view bytes) {
+  const std::optional<std::string_view> payload = payloadOf(key, Kind::Comparison, bytes);
+  if (!payload) return std::nullopt;
+  Reader r(*payload);
+  ImageComparison c;
+  c.against = r.getString();
+  const auto verdict = r.get<std::uint8_t>();
+  if (verdict > static_cast<std::uint8_t>(ImageVerdict::Fail)) return std::nullopt;
+  c.verdict = static_cast<ImageVerdict>(verdict);
+  for (double* v : {&c.maxError, &c.meanError, &c.rmsError, &c.psnr}) *v = r.get<double>();
+  c.maxX = r.get<std::int32_t>();
+  c.maxY = r.get<std::int32_t>();
+  for (std::size_t* n : {&c.compared, &c.failed, &c.warned}) *n = r.get<std::uint64_t>();
+  const auto reasons = r.get<std::uint64_t>();
+  for (std::uint64_t k = 0; r.ok() && k < reasons; ++k) {
+    std::string reason = r.getString();
+    c.masked[reason] = r.get<std::uint64_t>();
+  }
+  c.problem = r.getString();
+  if (!r.ok() || !r.atEnd()) return std::nullopt;
+  return c;
 }
 
 }  // namespace snell

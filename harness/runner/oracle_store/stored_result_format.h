@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/content_hash.h"
+#include "compare/image_compare.h"
 #include "core/expected_values.h"
 #include "oracle/reference/reference_image.h"
 
@@ -24,5 +25,11 @@ std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
 
 std::string encodeStoredReference(const Digest& key, const ReferenceImage& reference);
 std::optional<ReferenceImage> decodeStoredReference(const Digest& key, std::string_view bytes);
+
+// An image file's decoded pixels, and the comparison of two images.
+std::string encodeStoredImage(const Digest& key, const Image& image);
+std::optional<Image> decodeStoredImage(const Digest& key, std::string_view bytes);
+std::string encodeStoredComparison(const Digest& key, const ImageComparison& comparison);
+std::optional<ImageComparison> decodeStoredComparison(const Digest& key, std::string_view bytes);
 
 }  // namespace snell

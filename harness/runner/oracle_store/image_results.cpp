@@ -1,0 +1,69 @@
+#include "runner/oracle_store/image_results.h"
+
+#include <fstream>
+#include <iterator>
+#include <optional>
+
+#include "compare/image_io.h"
+#include "compare/image_library.h"
+#include "runner/oracle_store/stored_result_format.h"
+
+namespace snell {
+namespace {
+
+void addImage(ContentHash& hash, const Image& image) {
+  hash.add(image.width);
+  hash.add(image.height);
+  hash.add(static_cast<std::uint64_t>(image.pixels.size()));
+  hash.addBytes(image.pixels.data(), image.pixels.size() * sizeof(float));
+}
+
+}  // namespace
+
+Image readImageKept(const OracleStore* store, const std::filesystem::path& path) {
+  if (!store) return readImage(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return readImage(path);  // missing or unreadable: its own message
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  ContentHash hash;
+  hash.add(std::string_view("decoded image"));
+  hash.add(std::string_view(imageWriterIdentity()));  // the decoder's build
+  hash.add(std::string_view(bytes));
+  const Digest key = hash.finish();
+  if (const std::optional<std::string> kept = store->read(key))
+    if (std::optional<Image> image = decodeStoredImage(key, *kept)) {
+      store->markUsed(key);
+      return std::move(*image);
+    }
+  Image image = readImage(path);
+  store->write(key, encodeStoredImage(key, image));
+  return image;
+}
+
+ImageComparison compareImagesKept(const OracleStore* store, const std::string& against,
+                                  const Image& observed, const Image& expected,
+                                  const std::vector<PixelMask>& mask,
+                                  const ImageTolerance& thresholds) {
+  if (!store) return compareImages(against, observed, expected, mask, thresholds);
+  ContentHash hash;
+  hash.add(std::string_view("image comparison"));
+  hash.add(std::string_view(imageWriterIdentity()));  // the comparison's build
+  hash.add(std::string_view(against));
+  addImage(hash, observed);
+  addImage(hash, expected);
+  hash.add(static_cast<std::uint64_t>(mask.size()));
+  hash.addBytes(mask.data(), mask.size() * sizeof(PixelMask));
+  for (double t : {thresholds.fail, thresholds.warn, thresholds.failPercent, thresholds.hardFail})
+    hash.add(t);
+  const Digest key = hash.finish();
+  if (const std::optional<std::string> kept = store->read(key))
+    if (std::optional<ImageComparison> comparison = decodeStoredComparison(key, *kept)) {
+      store->markUsed(key);
+      return std::move(*comparison);
+    }
+  ImageComparison comparison = compareImages(against, observed, expected, mask, thresholds);
+  store->write(key, encodeStoredComparison(key, comparison));
+  return comparison;
+}
+
+}  // namespace snell
