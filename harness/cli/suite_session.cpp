@@ -214,25 +214,30 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   // The images across APIs are compared here once the workers are done; the
   // image module (a third of a second of loading) opens meanwhile, so that
   // comparison does not wait for it. A module that does not open is said
-  // by that comparison, which asks again. With an oracle store the
-  // comparisons of an earlier run on the same images need no module, so
-  // it opens only when one is missing.
+  // by that comparison, which asks again. With an oracle store, a run on
+  // the images of an earlier one compares nothing anew and needs no module:
+  // it opens once a case says it computed an oracle result, the sign of
+  // new work.
+  const bool drawsImages = std::any_of(run.cases.begin(), run.cases.end(),
+                                       [](const Case& c) { return c.spec.has("image"); });
   std::future<void> imagesReady;
-  if (run.oracleStore.empty() && std::any_of(run.cases.begin(), run.cases.end(), [](const Case& c) {
-        return c.spec.has("image");
-      }))
+  const auto openImagesMeanwhile = [&] {
+    if (!drawsImages || imagesReady.valid()) return;
     imagesReady = std::async(std::launch::async, [] {
       try {
         imageLibrary();
       } catch (const SetupError&) {
       }
     });
+  };
+  if (run.oracleStore.empty()) openImagesMeanwhile();
   std::size_t finished = slots.size() - tasks.size();
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& result) {
     ++finished;
     fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(toJson(result).dump());
+    if (result.oracleResults > result.oracleStored) openImagesMeanwhile();
     slots[slotOfTask[task]] = result;
   });
   for (auto& slot : slots)

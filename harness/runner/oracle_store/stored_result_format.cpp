@@ -115,8 +115,11 @@ OracleAlternative getAlternative(Reader& r) {
   return way;
 }
 
-std::string encodePayload(const std::vector<OracleVarying>& result) {
-  Writer w;
+// Each kind of result: its tag in the header, how it is written, and how
+// it is read back (false when what was read does not hold together).
+enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2, Image = 3, Comparison = 4 };
+
+void put(Writer& w, const std::vector<OracleVarying>& result) {
   w.put(static_cast<std::uint64_t>(result.size()));
   for (const OracleVarying& v : result) {
     w.put(v.name);
@@ -134,12 +137,9 @@ std::string encodePayload(const std::vector<OracleVarying>& result) {
       for (const OracleAlternative& way : sample.ways) putAlternative(w, way);
     }
   }
-  return w.take();
 }
 
-std::optional<std::vector<OracleVarying>> decodePayload(std::string_view payload) {
-  Reader r(payload);
-  std::vector<OracleVarying> result;
+bool get(Reader& r, std::vector<OracleVarying>& result) {
   const auto count = r.get<std::uint64_t>();
   for (std::uint64_t k = 0; r.ok() && k < count; ++k) {
     OracleVarying v;
@@ -161,20 +161,16 @@ std::optional<std::vector<OracleVarying>> decodePayload(std::string_view payload
     }
     result.push_back(std::move(v));
   }
-  if (!r.ok() || !r.atEnd()) return std::nullopt;
-  return result;
+  return true;
 }
 
-enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2, Image = 3, Comparison = 4 };
-
-void putImage(Writer& w, const Image& image) {
+void put(Writer& w, const Image& image) {
   w.put(static_cast<std::int32_t>(image.width));
   w.put(static_cast<std::int32_t>(image.height));
   w.putArray(image.pixels);
 }
 
-// False when the pixels do not cover width x height.
-bool getImage(Reader& r, Image& image) {
+bool get(Reader& r, Image& image) {
   image.width = r.get<std::int32_t>();
   image.height = r.get<std::int32_t>();
   image.pixels = r.getArray<float>();
@@ -183,92 +179,18 @@ bool getImage(Reader& r, Image& image) {
              static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4;
 }
 
-struct Header {
-  char magic[8];
-  std::uint32_t format;
-  Kind kind;
-  Digest key;
-  Digest payloadDigest;
-  std::uint64_t payloadSize;
-};
-static_assert(std::is_trivially_copyable_v<Header>);
-
-std::string withHeader(const Digest& key, Kind kind, const std::string& payload) {
-  Header header{};
-  std::memcpy(header.magic, kMagic, sizeof kMagic);
-  header.format = kStoredResultFormat;
-  header.kind = kind;
-  header.key = key;
-  header.payloadDigest = digestOf(payload);
-  header.payloadSize = payload.size();
-  std::string bytes(reinterpret_cast<const char*>(&header), sizeof header);
-  return bytes + payload;
-}
-
-// The payload, when the header is this format's, of this kind and key, and
-// the payload is whole.
-std::optional<std::string_view> payloadOf(const Digest& key, Kind kind, std::string_view bytes) {
-  Header header;
-  if (bytes.size() < sizeof header) return std::nullopt;
-  std::memcpy(&header, bytes.data(), sizeof header);
-  const std::string_view payload = bytes.substr(sizeof header);
-  if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 ||
-      header.format != kStoredResultFormat || header.kind != kind || !(header.key == key) ||
-      header.payloadSize != payload.size() || !(digestOf(payload) == header.payloadDigest))
-    return std::nullopt;
-  return payload;
-}
-
-}  // namespace
-
-std::string encodeStoredResult(const Digest& key, const std::vector<OracleVarying>& result) {
-  return withHeader(key, Kind::Vectors, encodePayload(result));
-}
-
-std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
-                                                             std::string_view bytes) {
-  const std::optional<std::string_view> payload = payloadOf(key, Kind::Vectors, bytes);
-  if (!payload) return std::nullopt;
-  return decodePayload(*payload);
-}
-
-std::string encodeStoredReference(const Digest& key, const ReferenceImage& reference) {
-  Writer w;
-  putImage(w, reference.color);
+void put(Writer& w, const ReferenceImage& reference) {
+  put(w, reference.color);
   w.putArray(reference.mask);
-  return withHeader(key, Kind::ReferenceImage, w.take());
 }
 
-std::optional<ReferenceImage> decodeStoredReference(const Digest& key, std::string_view bytes) {
-  const std::optional<std::string_view> payload = payloadOf(key, Kind::ReferenceImage, bytes);
-  if (!payload) return std::nullopt;
-  Reader r(*payload);
-  ReferenceImage reference;
-  const bool whole = getImage(r, reference.color);
+bool get(Reader& r, ReferenceImage& reference) {
+  const bool whole = get(r, reference.color);
   reference.mask = r.getArray<PixelMask>();
-  if (!whole || !r.ok() || !r.atEnd() ||
-      reference.mask.size() != reference.color.pixels.size() / 4)
-    return std::nullopt;
-  return reference;
+  return whole && reference.mask.size() == reference.color.pixels.size() / 4;
 }
 
-std::string encodeStoredImage(const Digest& key, const Image& image) {
-  Writer w;
-  putImage(w, image);
-  return withHeader(key, Kind::Image, w.take());
-}
-
-std::optional<Image> decodeStoredImage(const Digest& key, std::string_view bytes) {
-  const std::optional<std::string_view> payload = payloadOf(key, Kind::Image, bytes);
-  if (!payload) return std::nullopt;
-  Reader r(*payload);
-  Image image;
-  if (!getImage(r, image) || !r.ok() || !r.atEnd()) return std::nullopt;
-  return image;
-}
-
-std::string encodeStoredComparison(const Digest& key, const ImageComparison& c) {
-  Writer w;
+void put(Writer& w, const ImageComparison& c) {
   w.put(c.against);
   w.put(static_cast<std::uint8_t>(c.verdict));
   for (double v : {c.maxError, c.meanError, c.rmsError, c.psnr}) w.put(v);
@@ -281,17 +203,11 @@ std::string encodeStoredComparison(const Digest& key, const ImageComparison& c) 
     w.put(static_cast<std::uint64_t>(count));
   }
   w.put(c.problem);
-  return withHeader(key, Kind::Comparison, w.take());
 }
 
-std::optional<ImageComparison> decodeStoredComparison(const Digest& key, std::string_view bytes) {
-  const std::optional<std::string_view> payload = payloadOf(key, Kind::Comparison, bytes);
-  if (!payload) return std::nullopt;
-  Reader r(*payload);
-  ImageComparison c;
+bool get(Reader& r, ImageComparison& c) {
   c.against = r.getString();
   const auto verdict = r.get<std::uint8_t>();
-  if (verdict > static_cast<std::uint8_t>(ImageVerdict::Fail)) return std::nullopt;
   c.verdict = static_cast<ImageVerdict>(verdict);
   for (double* v : {&c.maxError, &c.meanError, &c.rmsError, &c.psnr}) *v = r.get<double>();
   c.maxX = r.get<std::int32_t>();
@@ -303,8 +219,83 @@ std::optional<ImageComparison> decodeStoredComparison(const Digest& key, std::st
     c.masked[reason] = r.get<std::uint64_t>();
   }
   c.problem = r.getString();
-  if (!r.ok() || !r.atEnd()) return std::nullopt;
-  return c;
+  return verdict <= static_cast<std::uint8_t>(ImageVerdict::Fail);
+}
+
+struct Header {
+  char magic[8];
+  std::uint32_t format;
+  Kind kind;
+  Digest key;
+  Digest payloadDigest;
+  std::uint64_t payloadSize;
+};
+static_assert(std::is_trivially_copyable_v<Header>);
+
+template <typename T>
+std::string encode(const Digest& key, Kind kind, const T& value) {
+  Writer w;
+  put(w, value);
+  const std::string payload = w.take();
+  Header header{};
+  std::memcpy(header.magic, kMagic, sizeof kMagic);
+  header.format = kStoredResultFormat;
+  header.kind = kind;
+  header.key = key;
+  header.payloadDigest = digestOf(payload);
+  header.payloadSize = payload.size();
+  std::string bytes(reinterpret_cast<const char*>(&header), sizeof header);
+  return bytes + payload;
+}
+
+// The value, when the header is this format's, of this kind and key, the
+// payload is whole, and it reads to its end.
+template <typename T>
+std::optional<T> decode(const Digest& key, Kind kind, std::string_view bytes) {
+  Header header;
+  if (bytes.size() < sizeof header) return std::nullopt;
+  std::memcpy(&header, bytes.data(), sizeof header);
+  const std::string_view payload = bytes.substr(sizeof header);
+  if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 ||
+      header.format != kStoredResultFormat || header.kind != kind || !(header.key == key) ||
+      header.payloadSize != payload.size() || !(digestOf(payload) == header.payloadDigest))
+    return std::nullopt;
+  Reader r(payload);
+  T value{};
+  const bool consistent = get(r, value);
+  if (!consistent || !r.ok() || !r.atEnd()) return std::nullopt;
+  return value;
+}
+
+}  // namespace
+
+std::string encodeStoredResult(const Digest& key, const std::vector<OracleVarying>& result) {
+  return encode(key, Kind::Vectors, result);
+}
+std::optional<std::vector<OracleVarying>> decodeStoredResult(const Digest& key,
+                                                             std::string_view bytes) {
+  return decode<std::vector<OracleVarying>>(key, Kind::Vectors, bytes);
+}
+
+std::string encodeStoredReference(const Digest& key, const ReferenceImage& reference) {
+  return encode(key, Kind::ReferenceImage, reference);
+}
+std::optional<ReferenceImage> decodeStoredReference(const Digest& key, std::string_view bytes) {
+  return decode<ReferenceImage>(key, Kind::ReferenceImage, bytes);
+}
+
+std::string encodeStoredImage(const Digest& key, const Image& image) {
+  return encode(key, Kind::Image, image);
+}
+std::optional<Image> decodeStoredImage(const Digest& key, std::string_view bytes) {
+  return decode<Image>(key, Kind::Image, bytes);
+}
+
+std::string encodeStoredComparison(const Digest& key, const ImageComparison& comparison) {
+  return encode(key, Kind::Comparison, comparison);
+}
+std::optional<ImageComparison> decodeStoredComparison(const Digest& key, std::string_view bytes) {
+  return decode<ImageComparison>(key, Kind::Comparison, bytes);
 }
 
 }  // namespace snell
