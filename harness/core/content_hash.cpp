@@ -13,8 +13,7 @@ struct ContentHash::State {
 };
 
 ContentHash::ContentHash() : state_(std::make_unique<State>()) {
-  if (!state_->xxh || XXH3_128bits_reset(state_->xxh) != XXH_OK)
-    throw std::bad_alloc();
+  if (!state_->xxh || XXH3_128bits_reset(state_->xxh) != XXH_OK) throw std::bad_alloc();
 }
 
 ContentHash::~ContentHash() = default;

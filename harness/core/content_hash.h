@@ -29,10 +29,8 @@ class ContentHash {
   void addBytes(const void* data, std::size_t size);
   void add(std::string_view text);  // length first, then the bytes
   template <typename T>
-    requires std::is_arithmetic_v<T> || std::is_enum_v<T>
-  void add(T value) {
-    addBytes(&value, sizeof value);
-  }
+  requires std::is_arithmetic_v<T> || std::is_enum_v<T>
+  void add(T value) { addBytes(&value, sizeof value); }
   Digest finish() const;
 
  private:

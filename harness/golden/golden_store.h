@@ -32,10 +32,10 @@ bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend)
 // truncated, wrong size) and what to do: check it, or run `blessCommand`
 // (the caller's, since only it knows the flags the user ran with). The
 // image file is read by `read` (readImage, or one that keeps its pixels).
-Golden readGolden(
-    const std::filesystem::path& root, const std::string& caseId, const std::string& backend,
-    int expectedWidth, int expectedHeight, const std::string& blessCommand,
-    const std::function<Image(const std::filesystem::path&)>& read = readImage);
+Golden readGolden(const std::filesystem::path& root, const std::string& caseId,
+                  const std::string& backend, int expectedWidth, int expectedHeight,
+                  const std::string& blessCommand,
+                  const std::function<Image(const std::filesystem::path&)>& read = readImage);
 
 // Writes the three files, each atomically (temporary file, then rename).
 void writeGolden(const std::filesystem::path& root, const std::string& caseId,

@@ -139,8 +139,8 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                           blessCommand(name, options.blessFlags, c.id),
                           [&](const fs::path& path) { return readImageKept(store, path); });
       }();
-      check.comparisons.push_back(compareTimed(store, "golden", outcome.image, golden.image,
-                                               reference.mask, c.spec.image));
+      check.comparisons.push_back(
+          compareTimed(store, "golden", outcome.image, golden.image, reference.mask, c.spec.image));
       writeHeatMapTimed(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
                         reference.mask, c.spec.image.fail);
     } catch (const UsageError& error) {

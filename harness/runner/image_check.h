@@ -21,7 +21,8 @@ namespace snell {
 struct ImageCheckOptions {
   std::filesystem::path outDir;     // where images, heat maps and masks are written
   std::filesystem::path goldenDir;  // empty: no golden comparison (bless runs)
-  std::string goldenKey = "";  // NOLINT(readability-redundant-string-init): the backend's golden key; empty: its name
+  std::string goldenKey =
+      "";  // NOLINT(readability-redundant-string-init): the backend's golden key; empty: its name
   // The user's own `--shaders`/`--golden` flags, repeated in the bless
   // command a missing or broken golden's message advises.
   std::string blessFlags = "";  // NOLINT(readability-redundant-string-init)

@@ -66,9 +66,9 @@ std::string derivedIdentity(const derived::ShaderSource& source,
   const std::string build =
       codeBuild(reinterpret_cast<const void*>(&derived::makeDerivedVectorOracle));
   if (build.empty()) return "";
-  std::string identity = fmt::format("derived build {} stage {} file {} ({} bytes)\n{}\n", build,
-                                     static_cast<int>(source.stage), source.file,
-                                     source.text.size(), source.text);
+  std::string identity =
+      fmt::format("derived build {} stage {} file {} ({} bytes)\n{}\n", build,
+                  static_cast<int>(source.stage), source.file, source.text.size(), source.text);
   for (const derived::OutputRequest& r : wanted)
     identity += fmt::format("{} after line {}\n", r.name, r.afterLine);
   return identity;

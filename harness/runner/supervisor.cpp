@@ -106,10 +106,10 @@ class Supervision {
       }
     }
     const bool fromEnd = backendOrder(backend) % 2 == 1;
-    const auto it = fromEnd ? std::prev(std::find_if(pending_.rbegin(), pending_.rend(),
-                                                     ofBackend(backend))
-                                            .base())
-                            : std::find_if(pending_.begin(), pending_.end(), ofBackend(backend));
+    const auto it =
+        fromEnd
+            ? std::prev(std::find_if(pending_.rbegin(), pending_.rend(), ofBackend(backend)).base())
+            : std::find_if(pending_.begin(), pending_.end(), ofBackend(backend));
     const std::size_t index = *it;
     pending_.erase(it);
     const Task& task = tasks_[index];

@@ -63,10 +63,10 @@ int runWorker(const WorkerOptions& options) {
     validateCase(*it->second, scenes);  // the same step the supervisor ran
     if (!backend) {
       backend = makeBackend(entry.name, backendOptions(options));
-      runner = std::make_unique<CaseRunner>(*backend, oracles, scenes, references,
-                                            ImageCheckOptions{options.outDir, options.goldenDir,
-                                                              entry.goldenKey, options.blessFlags,
-                                                              store});
+      runner = std::make_unique<CaseRunner>(
+          *backend, oracles, scenes, references,
+          ImageCheckOptions{options.outDir, options.goldenDir, entry.goldenKey, options.blessFlags,
+                            store});
       if (options.spawnedAtNs > 0)
         startSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch() -

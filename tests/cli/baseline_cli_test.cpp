@@ -154,8 +154,8 @@ TEST(BaselineCli, SkippedCasesDoNotRun) {
 // Results with the timings taken out: what must match between runs.
 std::vector<nlohmann::json> withoutTimings(std::vector<nlohmann::json> results) {
   for (nlohmann::json& r : results)
-    for (const char* key : {"seconds", "backend_seconds", "oracle_seconds", "phases", "oracle_results",
-                            "oracle_stored"})
+    for (const char* key : {"seconds", "backend_seconds", "oracle_seconds", "phases",
+                            "oracle_results", "oracle_stored"})
       r.erase(key);
   return results;
 }

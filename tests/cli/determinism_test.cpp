@@ -37,8 +37,8 @@ std::string runResults(const std::string& environment, int jobs) {
   std::string out;
   for (std::string line; std::getline(in, line);) {
     nlohmann::json j = nlohmann::json::parse(line);
-    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds", "phases", "oracle_results",
-                               "oracle_stored"})
+    for (const char* timing : {"seconds", "backend_seconds", "oracle_seconds", "phases",
+                               "oracle_results", "oracle_stored"})
       j.erase(timing);
     out += j.dump() + "\n";
   }

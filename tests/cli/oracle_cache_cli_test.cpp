@@ -24,9 +24,10 @@ class OracleCacheCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(dir_); }
   snell::testing::Outcome run(const std::string& cache) {
-    return runSnell(fmt::format("run --backend gl --filter 'orange-book/14.1-fresnel/s*' "
-                                "--out {} --oracle-cache {}",
-                                (dir_ / "out").string(), cache));
+    return runSnell(
+        fmt::format("run --backend gl --filter 'orange-book/14.1-fresnel/s*' "
+                    "--out {} --oracle-cache {}",
+                    (dir_ / "out").string(), cache));
   }
   fs::path dir_;
 };

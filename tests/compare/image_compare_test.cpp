@@ -1,7 +1,6 @@
 #include "compare/image_compare.h"
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <chrono>
@@ -103,7 +102,8 @@ TEST(ImageCompare, HeatMapIsWritten) {
 // or a file changed since, are written.
 TEST(ImageFiles, TheSamePicturesAreWrittenOnce) {
   namespace fs = std::filesystem;
-  const fs::path dir = fs::temp_directory_path() / ("snell-written-once-" + std::to_string(getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("snell-written-once-" + std::to_string(getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path exr = dir / "image.exr", png = dir / "image.png", heat = dir / "heat.png";

@@ -2,6 +2,8 @@
 // reads back bit for bit, a damaged or foreign file reads as nothing, every
 // part of the input changes the key, the trim drops the least recently used
 // first, and OracleCache computes only what the store does not hold.
+#include "runner/oracle_store/oracle_store.h"
+
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -14,14 +16,13 @@
 #include <limits>
 #include <thread>
 
+#include "compare/image_io.h"
 #include "core/build_id.h"
 #include "core/content_hash.h"
+#include "core/errors.h"
 #include "runner/case_runner.h"
 #include "runner/oracle_cache.h"
-#include "compare/image_io.h"
-#include "core/errors.h"
 #include "runner/oracle_store/image_results.h"
-#include "runner/oracle_store/oracle_store.h"
 #include "runner/oracle_store/oracle_store_key.h"
 #include "runner/oracle_store/stored_result_format.h"
 
@@ -82,8 +83,9 @@ std::vector<OracleVarying> awkwardResult() {
   a.lo = {-kInf, -0.0, 0.0, 0x1p-149, 1.0, -0.5};
   a.hi = {kInf, 0.0, 0.1, 0x1p-149, 1.0000001, -0.25};  // 0.1 and 1.0000001 are not floats
   a.undefined = {1, 0, 0, 0, 0, 0};
-  a.alternatives = {{4, {{{1.0, 2.0, 3.0}, {0.5, 1.5, 2.5}, {1.5, 2.5, 3.5}, {0, 0, 1}},
-                         {{-1.0, -2.0, -3.0}, {-1.5, -2.5, -kInf}, {-0.5, -1.5, kInf}, {0, 0, 0}}}}};
+  a.alternatives = {{4,
+                     {{{1.0, 2.0, 3.0}, {0.5, 1.5, 2.5}, {1.5, 2.5, 3.5}, {0, 0, 1}},
+                      {{-1.0, -2.0, -3.0}, {-1.5, -2.5, -kInf}, {-0.5, -1.5, kInf}, {0, 0, 0}}}}};
   a.mergedToHull = 7;
   OracleVarying b;
   b.name = "fresnel";
@@ -134,8 +136,8 @@ TEST(StoredResultFormat, AReferenceImageReadsBackAndAVectorFileIsNotOne) {
   for (std::size_t k = 0; k < reference.color.pixels.size(); ++k)
     reference.color.pixels[k] = static_cast<float>(k) * 0.1f - 1.0f;
   reference.color.pixels[5] = -0.0f;
-  reference.mask = {PixelMask::None, PixelMask::Silhouette, PixelMask::FaceEdge,
-                    PixelMask::Undefined, PixelMask::None, PixelMask::None};
+  reference.mask = {PixelMask::None,      PixelMask::Silhouette, PixelMask::FaceEdge,
+                    PixelMask::Undefined, PixelMask::None,       PixelMask::None};
   const std::string bytes = encodeStoredReference(keyOf("k"), reference);
   const auto back = decodeStoredReference(keyOf("k"), bytes);
   ASSERT_TRUE(back);

@@ -80,7 +80,8 @@ void runFragmentValues(const Case& c, const ResolvedBindings& bindings, CheckEnv
                        CaseResult& result) {
   const Scene& scene = env.scenes.get(c.spec.scene);
   const auto backendStart = std::chrono::steady_clock::now();
-  FragmentVectorCheck check = checkFragmentVectors(env.backend, *c.manifest, scene, bindings, env.oracles);
+  FragmentVectorCheck check =
+      checkFragmentVectors(env.backend, *c.manifest, scene, bindings, env.oracles);
   result.backendSeconds += secondsSince(backendStart) - check.oracleSeconds;
   result.oracleSeconds += check.oracleSeconds;
   if (!check.compiled) {

@@ -58,8 +58,8 @@ class OracleStore {
 std::filesystem::path defaultOracleStoreDir();
 
 struct StoreTrim {
-  std::size_t removed = 0;     // files
-  std::uintmax_t kept = 0;     // bytes left
+  std::size_t removed = 0;  // files
+  std::uintmax_t kept = 0;  // bytes left
 };
 // Removes the least recently used results until at most `maxBytes` are
 // left, and any temporary file an interrupted write left behind.

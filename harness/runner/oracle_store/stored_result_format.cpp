@@ -14,10 +14,8 @@ constexpr char kMagic[8] = {'s', 'n', 'e', 'l', 'l', 'o', 'r', 'c'};
 class Writer {
  public:
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  void put(const T& value) {
-    out_.append(reinterpret_cast<const char*>(&value), sizeof value);
-  }
+  requires std::is_trivially_copyable_v<T>
+  void put(const T& value) { out_.append(reinterpret_cast<const char*>(&value), sizeof value); }
   void put(const std::string& text) {
     put(static_cast<std::uint64_t>(text.size()));
     out_ += text;
@@ -53,8 +51,7 @@ class Reader {
   bool atEnd() const { return at_ == end_; }
 
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  T get() {
+  requires std::is_trivially_copyable_v<T> T get() {
     T value{};
     if (!take(&value, sizeof value)) return T{};
     return value;

@@ -10,8 +10,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/content_hash.h"
 #include "compare/image_compare.h"
+#include "core/content_hash.h"
 #include "core/expected_values.h"
 #include "oracle/reference/reference_image.h"
 
