@@ -148,6 +148,9 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     throw UsageError(fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids",
                                  onlyImageCases ? "image " : "", options.filter));
   validateCases(run.cases, options.shaders);
+  if (std::any_of(run.cases.begin(), run.cases.end(),
+                  [](const Case& c) { return c.spec.has("image"); }))
+    requireImageLibraryFile();
   if (!options.shard.empty()) {
     const Shard shard = parseShard(options.shard);
     std::vector<Case> mine;

@@ -46,6 +46,19 @@ std::vector<std::string> imageLibraryCandidates() {
   return candidates;
 }
 
+void requireImageLibraryFile() {
+  const std::vector<std::string> candidates = imageLibraryCandidates();
+  for (const std::string& candidate : candidates)
+    if (std::filesystem::is_regular_file(candidate)) return;
+  std::string tried;
+  for (const std::string& candidate : candidates) tried += "\n  " + candidate;
+  throw SetupError(fmt::format(
+      "the image cases need snell's image module, and none of these files exists:{}\n"
+      "build it (cmake --build build --target snell_image_library), set SNELL_IMAGE_LIBRARY "
+      "to its path, or leave the image cases out with --filter",
+      tried));
+}
+
 const std::string& imageWriterIdentity() {
   static const std::string identity = [] {
     std::string text = "snell " + buildIdContaining(reinterpret_cast<const void*>(&imageLibrary));

@@ -21,6 +21,12 @@ const SnellImageLibraryFunctions& imageLibrary();
 // The files imageLibrary() tries, in order.
 std::vector<std::string> imageLibraryCandidates();
 
+// Throws SetupError, naming the files looked for and what to do, when none
+// of imageLibraryCandidates() exists: said before a run that draws starts,
+// instead of as a failure of every image case. Opens nothing (a run whose
+// image work is kept may never need the module).
+void requireImageLibraryFile();
+
 // What decides the bytes of an image file written here, known without
 // opening the module: the module file that would be opened (its path, size
 // and time) and the build of the code that prepares the pixels. Part of the
