@@ -115,6 +115,9 @@ struct BackendOptions {
   std::string device = "";  // NOLINT(readability-redundant-string-init): keeps {.validation} quiet
   // OpenGL: "osmesa" or "egl" in place of the backend's own context provider.
   std::string glProvider = "";  // NOLINT(readability-redundant-string-init)
+  // A folder the backend may keep compiled programs in between runs (the
+  // run's oracle cache); empty: it keeps nothing.
+  std::string cacheDir = "";  // NOLINT(readability-redundant-string-init)
 };
 
 // A registered backend by name (backend_registry.h), with its environment

@@ -14,6 +14,7 @@
 #include "core/errors.h"
 #include "runner/block_pool.h"
 #include "runner/builtin_eval.h"
+#include "runner/oracle_store/oracle_store.h"
 
 namespace snell::cli {
 namespace {
@@ -132,6 +133,8 @@ Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on ev
       BackendOptions backendOptions;
       backendOptions.device = options->device;
       backendOptions.glProvider = options->glProvider;
+      // Compiled programs are kept where a run keeps its oracle results.
+      backendOptions.cacheDir = defaultOracleStoreDir().string();
       backend = makeBackend(options->backend, backendOptions);
       rules = precisionRulesForApi(backend->driverInfo().api);
     }

@@ -131,8 +131,8 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
                  "Seconds a case may take before its worker is killed (default: the manifest's)")
       ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
   sub.add_option("--oracle-cache", options.oracleCache,
-                 "Folder where oracle results are kept across runs, or off (default: "
-                 "$SNELL_ORACLE_CACHE, else ~/.cache/snell/oracle)");
+                 "Folder where oracle results and compiled Vulkan programs are kept across "
+                 "runs, or off (default: $SNELL_ORACLE_CACHE, else ~/.cache/snell/oracle)");
   sub.add_flag("--validation", options.validation,
                "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
@@ -280,7 +280,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   // The streamed file is in completion order; the kept one is in task order,
   // so it is the same whatever the number of workers.
   if (json) json->finish(toResultsJsonLines(run.results, run.interruptedBy != 0));
-  if (!run.oracleStore.empty()) trimOracleStore(run.oracleStore, kOracleStoreMaxBytes);
+  if (!run.oracleStore.empty()) trimKeyedFileStore(run.oracleStore, kOracleStoreMaxBytes);
   return run;
 }
 

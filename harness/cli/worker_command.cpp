@@ -21,8 +21,9 @@ Command addWorkerCommand(CLI::App& app) {
                   "Share each case's CPU reference image with the run's other workers");
   sub->add_option("--spawned-at", options->spawnedAtNs,
                   "Steady-clock nanoseconds when the supervisor spawned this worker");
-  sub->add_option("--oracle-store", options->oracleStore,
-                  "Folder of oracle results kept across runs (as `run --oracle-cache`)");
+  sub->add_option(
+      "--oracle-store", options->oracleStore,
+      "Folder of oracle results and compiled programs kept across runs (as `run --oracle-cache`)");
   sub->add_option("--bless-flags", options->blessFlags,
                   "The user's --shaders/--golden flags, for the advice to bless a golden");
   return [options] { return runWorker(*options); };

@@ -21,8 +21,10 @@ namespace snell {
 
 namespace {
 BackendOptions backendOptions(const WorkerOptions& options) {
-  return {
-      .validation = options.validation, .device = options.device, .glProvider = options.glProvider};
+  return {.validation = options.validation,
+          .device = options.device,
+          .glProvider = options.glProvider,
+          .cacheDir = options.oracleStore};
 }
 }  // namespace
 

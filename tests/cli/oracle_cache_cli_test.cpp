@@ -93,3 +93,43 @@ TEST_F(OracleCacheCli, ARunAgainOpensNoImageModule) {
 }
 
 }  // namespace
+
+namespace {
+
+// The files under `dir` that hold a compiled Vulkan program (their header
+// names the store).
+int compiledPrograms(const fs::path& dir) {
+  int n = 0;
+  if (!fs::exists(dir)) return 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    char magic[8] = {};
+    in.read(magic, sizeof magic);
+    n += std::string(magic, sizeof magic) == "snellspv";
+  }
+  return n;
+}
+
+}  // namespace
+
+// `eval` on vk keeps its compiled probe programs where runs keep oracle
+// results ($SNELL_ORACLE_CACHE), and answers the same when it reads them.
+TEST_F(OracleCacheCli, EvalOnVkKeepsItsCompiledPrograms) {
+  fs::create_directories(dir_);
+  const fs::path input = dir_ / "input.jsonl";
+  std::ofstream(input) << R"({"fn":"refract","I":[0.6,-0.8,0],"N":[0,1,0],"eta":0.66})"
+                       << "\n"
+                       << R"({"fn":"reflect","I":[0.6,-0.8],"N":[0,1]})"
+                       << "\n";
+  const std::string env = fmt::format("SNELL_ORACLE_CACHE={}", (dir_ / "store").string());
+  const auto first = runSnell("eval --backend vk " + input.string(), env);
+  ASSERT_EQ(first.code, 0) << first.out;
+  EXPECT_EQ(compiledPrograms(dir_ / "store"), 2);
+  const auto second = runSnell("eval --backend vk " + input.string(), env);
+  ASSERT_EQ(second.code, 0) << second.out;
+  EXPECT_EQ(second.out, first.out);
+  EXPECT_EQ(compiledPrograms(dir_ / "store"), 2);
+  const auto off = runSnell("eval --backend vk " + input.string(), "SNELL_ORACLE_CACHE=off");
+  EXPECT_EQ(off.out, first.out);
+}

@@ -261,13 +261,13 @@ TEST_F(StoreFolder, TheTrimDropsTheLeastRecentlyUsedFirst) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     ASSERT_TRUE(store.load(keyOf(k)));
   }
-  const StoreTrim trim = trimOracleStore(dir_, 2 * each);
+  const StoreTrim trim = trimKeyedFileStore(dir_, 2 * each);
   EXPECT_EQ(trim.removed, 1u);
   EXPECT_EQ(trim.kept, 2 * each);
   EXPECT_FALSE(store.load(keyOf("b")));
   EXPECT_TRUE(store.load(keyOf("a")));
   EXPECT_TRUE(store.load(keyOf("c")));
-  EXPECT_EQ(trimOracleStore(dir_, 0).kept, 0u);
+  EXPECT_EQ(trimKeyedFileStore(dir_, 0).kept, 0u);
   EXPECT_TRUE(files().empty());
 }
 

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <utility>
 
+#include "backends/vk/compiled_program_store.h"
 #include "backends/vk/glsl_to_spirv.h"
 #include "backends/vk/legacy_adapter.h"
 #include "backends/vk/lru_cache.h"
@@ -76,7 +77,8 @@ class VkBackend final : public Backend {
         renderRunner_(device_),
         programs_(kCachedPrograms),
         captures_(kCachedPrograms),
-        renders_(kCachedPrograms) {
+        renders_(kCachedPrograms),
+        programStore_(options.cacheDir) {
     instance_.validationLog().throwIfAny("Vulkan start-up");
   }
 
@@ -85,7 +87,7 @@ class VkBackend final : public Backend {
 
   CompileOutcome compile(const ProgramSource& program) override {
     return validated("compile", [&] {
-      const VulkanProgram compiled = compileForVulkan(program);
+      const VulkanProgram compiled = programStore_.compile(program);
       if (compiled.ok) {
         // The driver (and the validation layer) get to see both modules too.
         checkShaderModule(compiled.vertexSpirv);
@@ -128,7 +130,7 @@ class VkBackend final : public Backend {
   // is valid until the next call.
   const VulkanProgram& compiled(const ProgramSource& source) {
     return programs_.getOrMake(programKey(source), [&] {
-      return std::make_unique<VulkanProgram>(compileForVulkan(source));
+      return std::make_unique<VulkanProgram>(programStore_.compile(source));
     });
   }
 
@@ -281,6 +283,7 @@ class VkBackend final : public Backend {
   LruCache<VulkanProgram> programs_;
   LruCache<PreparedCapture> captures_;
   LruCache<PreparedRender> renders_;
+  CompiledProgramStore programStore_;
 };
 
 }  // namespace

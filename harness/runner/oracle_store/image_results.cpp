@@ -29,15 +29,8 @@ Image readImageKept(const OracleStore* store, const std::filesystem::path& path)
   hash.add(std::string_view("decoded image"));
   hash.add(std::string_view(imageWriterIdentity()));  // the decoder's build
   hash.add(std::string_view(bytes));
-  const Digest key = hash.finish();
-  if (const std::optional<std::string> kept = store->read(key))
-    if (std::optional<Image> image = decodeStoredImage(key, *kept)) {
-      store->markUsed(key);
-      return std::move(*image);
-    }
-  Image image = readImage(path);
-  store->write(key, encodeStoredImage(key, image));
-  return image;
+  return store->keptOrComputed(hash.finish(), decodeStoredImage, encodeStoredImage,
+                               [&] { return readImage(path); });
 }
 
 ImageComparison compareImagesKept(const OracleStore* store, const std::string& against,
@@ -55,15 +48,9 @@ ImageComparison compareImagesKept(const OracleStore* store, const std::string& a
   hash.addBytes(mask.data(), mask.size() * sizeof(PixelMask));
   for (double t : {thresholds.fail, thresholds.warn, thresholds.failPercent, thresholds.hardFail})
     hash.add(t);
-  const Digest key = hash.finish();
-  if (const std::optional<std::string> kept = store->read(key))
-    if (std::optional<ImageComparison> comparison = decodeStoredComparison(key, *kept)) {
-      store->markUsed(key);
-      return std::move(*comparison);
-    }
-  ImageComparison comparison = compareImages(against, observed, expected, mask, thresholds);
-  store->write(key, encodeStoredComparison(key, comparison));
-  return comparison;
+  return store->keptOrComputed(hash.finish(), decodeStoredComparison, encodeStoredComparison, [&] {
+    return compareImages(against, observed, expected, mask, thresholds);
+  });
 }
 
 }  // namespace snell

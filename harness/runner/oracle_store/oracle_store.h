@@ -8,10 +8,9 @@
 // bytes the oracle computed, and any change to the build, the listing or
 // an input is another key.
 //
-// One file per result, written beside its name and renamed into place, so
-// concurrent workers never read half a file; a damaged file reads as a
-// miss. The folder is trimmed to a size after each run, the least recently
-// used results first.
+// One file per result in a KeyedFileStore (core/keyed_file_store.h); a
+// damaged file reads as a miss. The folder is trimmed to a size after each
+// run, the least recently used results first.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -19,6 +18,7 @@
 
 #include "core/content_hash.h"
 #include "core/expected_values.h"
+#include "core/keyed_file_store.h"
 #include "oracle/reference/reference_image.h"
 
 namespace snell {
@@ -26,43 +26,24 @@ namespace snell {
 // What a run may keep, at most (Mesa's shader cache keeps 1 GiB too).
 inline constexpr std::uintmax_t kOracleStoreMaxBytes = std::uintmax_t{1} << 30;
 
-class OracleStore {
+class OracleStore : public KeyedFileStore {
  public:
-  explicit OracleStore(std::filesystem::path dir) : dir_(std::move(dir)) {}
-  const std::filesystem::path& dir() const { return dir_; }
+  using KeyedFileStore::KeyedFileStore;
 
   // The result stored under `key`, or nothing (absent, unreadable,
-  // damaged). A hit marks the file as used now, for the trim.
+  // damaged). A hit marks the file as used now, for the trim. Other kinds
+  // of result are read and written as bytes of stored_result_format.h
+  // through read(), markUsed() and write().
   std::optional<std::vector<OracleVarying>> load(const Digest& key) const;
   std::optional<ReferenceImage> loadReference(const Digest& key) const;
-  // False when it could not be written (a full disk, a read-only folder):
-  // the result is then computed again next time, nothing else changes.
+  // False when it could not be written: see KeyedFileStore::write.
   bool save(const Digest& key, const std::vector<OracleVarying>& result) const;
   bool saveReference(const Digest& key, const ReferenceImage& reference) const;
-
-  // The same for any kind of result, in bytes of stored_result_format.h:
-  // read() gives the file's bytes as they are (decoding checks them), and
-  // markUsed() is for a hit.
-  std::optional<std::string> read(const Digest& key) const;
-  void markUsed(const Digest& key) const;
-  bool write(const Digest& key, const std::string& bytes) const;
-
- private:
-  std::filesystem::path pathOf(const Digest& key) const;
-  std::filesystem::path dir_;
 };
 
 // Where results are kept unless the user says otherwise: $SNELL_ORACLE_CACHE,
 // else $XDG_CACHE_HOME/snell/oracle, else $HOME/.cache/snell/oracle; empty
 // when none of those is set, or when SNELL_ORACLE_CACHE is "off".
 std::filesystem::path defaultOracleStoreDir();
-
-struct StoreTrim {
-  std::size_t removed = 0;  // files
-  std::uintmax_t kept = 0;  // bytes left
-};
-// Removes the least recently used results until at most `maxBytes` are
-// left, and any temporary file an interrupted write left behind.
-StoreTrim trimOracleStore(const std::filesystem::path& dir, std::uintmax_t maxBytes);
 
 }  // namespace snell

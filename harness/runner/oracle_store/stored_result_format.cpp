@@ -6,104 +6,41 @@
 #include <cstring>
 #include <type_traits>
 
+#include "core/sealed_record.h"
+
 namespace snell {
 namespace {
 
 constexpr char kMagic[8] = {'s', 'n', 'e', 'l', 'l', 'o', 'r', 'c'};
 
-class Writer {
- public:
-  template <typename T>
-  requires std::is_trivially_copyable_v<T>
-  void put(const T& value) { out_.append(reinterpret_cast<const char*>(&value), sizeof value); }
-  void put(const std::string& text) {
-    put(static_cast<std::uint64_t>(text.size()));
-    out_ += text;
-  }
-  template <typename T>
-  void putArray(const std::vector<T>& values) {
-    put(static_cast<std::uint64_t>(values.size()));
-    out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-  }
-  // Interval bounds are floats or infinities: stored in four bytes when
-  // every one converts back to the same double, else in eight.
-  void putBounds(const std::vector<double>& values) {
-    bool narrow = true;
-    for (double v : values)
-      if (std::isnan(v) || static_cast<double>(static_cast<float>(v)) != v) narrow = false;
-    put(static_cast<std::uint8_t>(narrow));
-    if (!narrow) return putArray(values);
-    std::vector<float> floats(values.begin(), values.end());
-    putArray(floats);
-  }
-  std::string take() { return std::move(out_); }
+// Interval bounds are floats or infinities: stored in four bytes when every
+// one converts back to the same double, else in eight.
+void putBounds(ByteWriter& w, const std::vector<double>& values) {
+  bool narrow = true;
+  for (double v : values)
+    if (std::isnan(v) || static_cast<double>(static_cast<float>(v)) != v) narrow = false;
+  w.put(static_cast<std::uint8_t>(narrow));
+  if (!narrow) return w.putArray(values);
+  const std::vector<float> floats(values.begin(), values.end());
+  w.putArray(floats);
+}
 
- private:
-  std::string out_;
-};
+std::vector<double> getBounds(ByteReader& r) {
+  const auto narrow = r.get<std::uint8_t>();
+  if (narrow > 1) r.fail();
+  if (narrow != 1) return r.getArray<double>();
+  const std::vector<float> floats = r.getArray<float>();
+  return {floats.begin(), floats.end()};
+}
 
-// Every read is checked against the end: damaged bytes make `ok` false,
-// never an out-of-bounds read or a huge allocation.
-class Reader {
- public:
-  explicit Reader(std::string_view bytes) : at_(bytes.data()), end_(bytes.data() + bytes.size()) {}
-  bool ok() const { return ok_; }
-  bool atEnd() const { return at_ == end_; }
-
-  template <typename T>
-  requires std::is_trivially_copyable_v<T> T get() {
-    T value{};
-    if (!take(&value, sizeof value)) return T{};
-    return value;
-  }
-  std::string getString() {
-    const auto size = get<std::uint64_t>();
-    if (!fits(size, 1)) return {};
-    std::string text(at_, size);
-    at_ += size;
-    return text;
-  }
-  template <typename T>
-  std::vector<T> getArray() {
-    const auto count = get<std::uint64_t>();
-    if (!fits(count, sizeof(T))) return {};
-    std::vector<T> values(count);
-    take(values.data(), count * sizeof(T));
-    return values;
-  }
-  std::vector<double> getBounds() {
-    const auto narrow = get<std::uint8_t>();
-    if (narrow > 1) ok_ = false;
-    if (narrow != 1) return getArray<double>();
-    const std::vector<float> floats = getArray<float>();
-    return {floats.begin(), floats.end()};
-  }
-
- private:
-  bool fits(std::uint64_t count, std::size_t size) {
-    if (ok_ && count <= static_cast<std::uint64_t>(end_ - at_) / size) return true;
-    ok_ = false;
-    return false;
-  }
-  bool take(void* out, std::size_t size) {
-    if (!fits(size, 1)) return false;
-    std::memcpy(out, at_, size);
-    at_ += size;
-    return true;
-  }
-  const char* at_;
-  const char* end_;
-  bool ok_ = true;
-};
-
-void putAlternative(Writer& w, const OracleAlternative& way) {
+void putAlternative(ByteWriter& w, const OracleAlternative& way) {
   w.putArray(way.reference);
   w.putArray(way.lo);
   w.putArray(way.hi);
   w.putArray(way.undefined);
 }
 
-OracleAlternative getAlternative(Reader& r) {
+OracleAlternative getAlternative(ByteReader& r) {
   OracleAlternative way;
   way.reference = r.getArray<double>();
   way.lo = r.getArray<double>();
@@ -116,7 +53,7 @@ OracleAlternative getAlternative(Reader& r) {
 // it is read back (false when what was read does not hold together).
 enum class Kind : std::uint32_t { Vectors = 1, ReferenceImage = 2, Image = 3, Comparison = 4 };
 
-void put(Writer& w, const std::vector<OracleVarying>& result) {
+void put(ByteWriter& w, const std::vector<OracleVarying>& result) {
   w.put(static_cast<std::uint64_t>(result.size()));
   for (const OracleVarying& v : result) {
     w.put(v.name);
@@ -124,8 +61,8 @@ void put(Writer& w, const std::vector<OracleVarying>& result) {
     w.put(static_cast<std::uint64_t>(v.mergedToHull));
     w.putArray(v.reference);
     w.putArray(v.strict);
-    w.putBounds(v.lo);
-    w.putBounds(v.hi);
+    putBounds(w, v.lo);
+    putBounds(w, v.hi);
     w.putArray(v.undefined);
     w.put(static_cast<std::uint64_t>(v.alternatives.size()));
     for (const SampleAlternatives& sample : v.alternatives) {
@@ -136,7 +73,7 @@ void put(Writer& w, const std::vector<OracleVarying>& result) {
   }
 }
 
-bool get(Reader& r, std::vector<OracleVarying>& result) {
+bool get(ByteReader& r, std::vector<OracleVarying>& result) {
   const auto count = r.get<std::uint64_t>();
   for (std::uint64_t k = 0; r.ok() && k < count; ++k) {
     OracleVarying v;
@@ -145,8 +82,8 @@ bool get(Reader& r, std::vector<OracleVarying>& result) {
     v.mergedToHull = r.get<std::uint64_t>();
     v.reference = r.getArray<double>();
     v.strict = r.getArray<float>();
-    v.lo = r.getBounds();
-    v.hi = r.getBounds();
+    v.lo = getBounds(r);
+    v.hi = getBounds(r);
     v.undefined = r.getArray<std::uint8_t>();
     const auto samples = r.get<std::uint64_t>();
     for (std::uint64_t s = 0; r.ok() && s < samples; ++s) {
@@ -161,13 +98,13 @@ bool get(Reader& r, std::vector<OracleVarying>& result) {
   return true;
 }
 
-void put(Writer& w, const Image& image) {
+void put(ByteWriter& w, const Image& image) {
   w.put(static_cast<std::int32_t>(image.width));
   w.put(static_cast<std::int32_t>(image.height));
   w.putArray(image.pixels);
 }
 
-bool get(Reader& r, Image& image) {
+bool get(ByteReader& r, Image& image) {
   image.width = r.get<std::int32_t>();
   image.height = r.get<std::int32_t>();
   image.pixels = r.getArray<float>();
@@ -176,18 +113,18 @@ bool get(Reader& r, Image& image) {
              static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4;
 }
 
-void put(Writer& w, const ReferenceImage& reference) {
+void put(ByteWriter& w, const ReferenceImage& reference) {
   put(w, reference.color);
   w.putArray(reference.mask);
 }
 
-bool get(Reader& r, ReferenceImage& reference) {
+bool get(ByteReader& r, ReferenceImage& reference) {
   const bool whole = get(r, reference.color);
   reference.mask = r.getArray<PixelMask>();
   return whole && reference.mask.size() == reference.color.pixels.size() / 4;
 }
 
-void put(Writer& w, const ImageComparison& c) {
+void put(ByteWriter& w, const ImageComparison& c) {
   w.put(c.against);
   w.put(static_cast<std::uint8_t>(c.verdict));
   for (double v : {c.maxError, c.meanError, c.rmsError, c.psnr}) w.put(v);
@@ -202,7 +139,7 @@ void put(Writer& w, const ImageComparison& c) {
   w.put(c.problem);
 }
 
-bool get(Reader& r, ImageComparison& c) {
+bool get(ByteReader& r, ImageComparison& c) {
   c.against = r.getString();
   const auto verdict = r.get<std::uint8_t>();
   c.verdict = static_cast<ImageVerdict>(verdict);
@@ -219,45 +156,28 @@ bool get(Reader& r, ImageComparison& c) {
   return verdict <= static_cast<std::uint8_t>(ImageVerdict::Fail);
 }
 
-struct Header {
-  char magic[8];
-  std::uint32_t format;
-  Kind kind;
-  Digest key;
-  Digest payloadDigest;
-  std::uint64_t payloadSize;
-};
-static_assert(std::is_trivially_copyable_v<Header>);
+RecordTag tagOf(Kind kind) {
+  RecordTag tag{};
+  std::memcpy(tag.magic, kMagic, sizeof kMagic);
+  tag.format = kStoredResultFormat;
+  tag.kind = static_cast<std::uint32_t>(kind);
+  return tag;
+}
 
 template <typename T>
 std::string encode(const Digest& key, Kind kind, const T& value) {
-  Writer w;
+  ByteWriter w;
   put(w, value);
-  const std::string payload = w.take();
-  Header header{};
-  std::memcpy(header.magic, kMagic, sizeof kMagic);
-  header.format = kStoredResultFormat;
-  header.kind = kind;
-  header.key = key;
-  header.payloadDigest = digestOf(payload);
-  header.payloadSize = payload.size();
-  std::string bytes(reinterpret_cast<const char*>(&header), sizeof header);
-  return bytes + payload;
+  return sealRecord(tagOf(kind), key, w.take());
 }
 
-// The value, when the header is this format's, of this kind and key, the
+// The value, when the record is this format's, of this kind and key, the
 // payload is whole, and it reads to its end.
 template <typename T>
 std::optional<T> decode(const Digest& key, Kind kind, std::string_view bytes) {
-  Header header;
-  if (bytes.size() < sizeof header) return std::nullopt;
-  std::memcpy(&header, bytes.data(), sizeof header);
-  const std::string_view payload = bytes.substr(sizeof header);
-  if (std::memcmp(header.magic, kMagic, sizeof kMagic) != 0 ||
-      header.format != kStoredResultFormat || header.kind != kind || !(header.key == key) ||
-      header.payloadSize != payload.size() || !(digestOf(payload) == header.payloadDigest))
-    return std::nullopt;
-  Reader r(payload);
+  const std::optional<std::string_view> payload = openRecord(tagOf(kind), key, bytes);
+  if (!payload) return std::nullopt;
+  ByteReader r(*payload);
   T value{};
   const bool consistent = get(r, value);
   if (!consistent || !r.ok() || !r.atEnd()) return std::nullopt;
