@@ -69,7 +69,7 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
   return result;
 }
 
-bool fits(const BuiltinWay& way, const std::vector<float>& vector) {
+bool fits(const BuiltinWay& way, std::span<const float> vector) {
   for (std::size_t k = 0; k < vector.size(); ++k) {
     if (way.undefined[k]) continue;
     if (!(way.lo[k] <= vector[k] && vector[k] <= way.hi[k])) return false;
@@ -78,7 +78,7 @@ bool fits(const BuiltinWay& way, const std::vector<float>& vector) {
 }
 
 // How far outside a way the vector lies, summed over components (0 inside).
-double distanceOutside(const BuiltinWay& way, const std::vector<float>& vector) {
+double distanceOutside(const BuiltinWay& way, std::span<const float> vector) {
   double distance = 0.0;
   for (std::size_t k = 0; k < vector.size(); ++k) {
     if (way.undefined[k]) continue;
@@ -97,12 +97,12 @@ Builtin parseBuiltin(const std::string& fn) {
 
 }  // namespace
 
-bool BuiltinResult::allows(const std::vector<float>& vector) const {
+bool BuiltinResult::allows(std::span<const float> vector) const {
   return std::any_of(ways.begin(), ways.end(),
                      [&](const BuiltinWay& way) { return fits(way, vector); });
 }
 
-const BuiltinWay& BuiltinResult::nearestWay(const std::vector<float>& vector) const {
+const BuiltinWay& BuiltinResult::nearestWay(std::span<const float> vector) const {
   return *std::min_element(ways.begin(), ways.end(), [&](const BuiltinWay& a, const BuiltinWay& b) {
     return distanceOutside(a, vector) < distanceOutside(b, vector);
   });

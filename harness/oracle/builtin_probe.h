@@ -1,8 +1,10 @@
 #pragma once
 // Single built-in calls evaluated by the oracle, for `snell eval`.
+#include <span>
 #include <string>
 #include <vector>
 
+#include "oracle/components.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -16,22 +18,22 @@ struct BuiltinCall {
 // One way the built-in may go (refract near the critical angle: the zero
 // vector or the refracted ray), each component's exact value and interval.
 struct BuiltinWay {
-  std::vector<double> value;
-  std::vector<double> lo, hi;
-  std::vector<bool> undefined;  // the spec leaves the component open
+  Components<double> value;
+  Components<double> lo, hi;
+  Components<bool> undefined;  // the spec leaves the component open
 };
 
 struct BuiltinResult {
-  std::vector<double> value;   // exact math on the fp32 inputs
-  std::vector<float> strict;   // fp32 evaluation of the defining formula
-  std::vector<double> lo, hi;  // fp32 results the spec allows, per component (the hull of the ways)
-  std::vector<bool> undefined;
+  Components<double> value;   // exact math on the fp32 inputs
+  Components<float> strict;   // fp32 evaluation of the defining formula
+  Components<double> lo, hi;  // fp32 results the spec allows, per component (the hull of the ways)
+  Components<bool> undefined;
   std::vector<BuiltinWay> ways;  // one, or each way an undecidable branch may go
 
   // Whether a driver's vector fits one way entirely.
-  bool allows(const std::vector<float>& vector) const;
+  bool allows(std::span<const float> vector) const;
   // The way `vector` is judged against: one it fits, else the nearest.
-  const BuiltinWay& nearestWay(const std::vector<float>& vector) const;
+  const BuiltinWay& nearestWay(std::span<const float> vector) const;
 };
 
 // Throws UsageError for an unknown fn or mismatched lengths.

@@ -26,8 +26,8 @@ void number(fmt::memory_buffer& out, double x) {
   out.append(digits.data(), end);
 }
 
-template <class T>
-void numbers(fmt::memory_buffer& out, const std::vector<T>& values) {
+template <class Values>
+void numbers(fmt::memory_buffer& out, const Values& values) {
   out.push_back('[');
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (k) out.push_back(',');
@@ -36,7 +36,7 @@ void numbers(fmt::memory_buffer& out, const std::vector<T>& values) {
   out.push_back(']');
 }
 
-void flags(fmt::memory_buffer& out, const std::vector<bool>& values) {
+void flags(fmt::memory_buffer& out, const Components<bool>& values) {
   out.push_back('[');
   for (std::size_t k = 0; k < values.size(); ++k) {
     if (k) out.push_back(',');
@@ -45,7 +45,7 @@ void flags(fmt::memory_buffer& out, const std::vector<bool>& values) {
   out.push_back(']');
 }
 
-bool any(const std::vector<bool>& values) {
+bool any(const Components<bool>& values) {
   return std::find(values.begin(), values.end(), true) != values.end();
 }
 
