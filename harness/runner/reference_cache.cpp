@@ -93,10 +93,11 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
   const fs::path color = dir / "reference.exr", mask = maskImagePath(outDir_, c.id),
                  owner = dir / "reference.run";
   const FileLock lock(dir / "reference.lock");
+  const bool sharedThisRun = contentsOf(owner) == runId_;
   // The run's other worker rendered it: with a store, its result is there
   // (render() reads it without decoding an image file).
-  if (contentsOf(owner) == runId_ && store_) return render(c, scene, bindings);
-  if (contentsOf(owner) == runId_) {
+  if (sharedThisRun && store_) return render(c, scene, bindings);
+  if (sharedThisRun) {
     const PhaseScope phase(Phase::Images);
     try {
       ReferenceImage shared{readImage(color), maskFromImage(readImage(mask))};

@@ -37,6 +37,18 @@ void addValues(ContentHash& hash, const UniformMap& uniforms, const ConstantMap&
   }
 }
 
+// Named images (cube maps, 2D textures), any of them possibly missing: the
+// count, then each name, whether it is there, and its own fields.
+template <class Map, class AddImage>
+void addNamedImages(ContentHash& hash, const Map& images, AddImage addImage) {
+  hash.add(static_cast<std::uint64_t>(images.size()));
+  for (const auto& [name, image] : images) {
+    hash.add(name);
+    hash.add(image != nullptr);
+    if (image) addImage(*image);
+  }
+}
+
 }  // namespace
 
 Digest oracleResultKey(std::string_view identity, const OracleInput& input) {
@@ -57,29 +69,21 @@ Digest referenceImageKey(std::string_view identity, const ReferenceInput& input)
   hash.add(std::string_view(input.oracle));
   addValues(hash, input.uniforms, input.constants, input.attributes, input.vertexCount);
   addArray(hash, input.indices);
-  hash.add(static_cast<std::uint64_t>(input.cubeMaps.size()));
-  for (const auto& [name, cube] : input.cubeMaps) {
-    hash.add(name);
-    hash.add(cube != nullptr);
-    if (!cube) continue;
-    hash.add(cube->size);
-    hash.add(cube->filter);
-    hash.add(cube->seamless);
-    for (const std::vector<float>& face : cube->faces) addArray(hash, face);
-  }
+  addNamedImages(hash, input.cubeMaps, [&](const auto& cube) {
+    hash.add(cube.size);
+    hash.add(cube.filter);
+    hash.add(cube.seamless);
+    for (const std::vector<float>& face : cube.faces) addArray(hash, face);
+  });
   hash.add(input.width);
   hash.add(input.height);
   for (float c : input.clearColor) hash.add(c);
   hash.add(input.cullBackFaces);
-  hash.add(static_cast<std::uint64_t>(input.textures2D.size()));
-  for (const auto& [name, image] : input.textures2D) {
-    hash.add(name);
-    hash.add(image != nullptr);
-    if (!image) continue;
-    hash.add(image->width);
-    hash.add(image->height);
-    addArray(hash, image->pixels);
-  }
+  addNamedImages(hash, input.textures2D, [&](const auto& image) {
+    hash.add(image.width);
+    hash.add(image.height);
+    addArray(hash, image.pixels);
+  });
   return hash.finish();
 }
 
