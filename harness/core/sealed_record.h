@@ -28,6 +28,14 @@ struct RecordTag {
   std::uint32_t format;
   std::uint32_t kind;
 };
+// `magic` is exactly 8 characters (a literal's terminating NUL is left out).
+inline RecordTag recordTag(const char (&magic)[9], std::uint32_t format, std::uint32_t kind) {
+  RecordTag tag{};
+  std::memcpy(tag.magic, magic, sizeof tag.magic);
+  tag.format = format;
+  tag.kind = kind;
+  return tag;
+}
 
 std::string sealRecord(const RecordTag& tag, const Digest& key, std::string_view payload);
 // The payload, when the header matches `tag` and `key` and the payload is

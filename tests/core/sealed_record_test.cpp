@@ -9,22 +9,14 @@
 namespace snell {
 namespace {
 
-RecordTag tag(const char* magic, std::uint32_t format, std::uint32_t kind) {
-  RecordTag t{};
-  std::memcpy(t.magic, magic, sizeof t.magic);
-  t.format = format;
-  t.kind = kind;
-  return t;
-}
-
 TEST(SealedRecord, OpensOnlyUnderItsOwnTagAndKey) {
-  const RecordTag mine = tag("snelltst", 1, 2);
+  const RecordTag mine = recordTag("snelltst", 1, 2);
   const Digest key = digestOf("key");
   const std::string bytes = sealRecord(mine, key, "payload");
   ASSERT_EQ(openRecord(mine, key, bytes), std::optional<std::string_view>("payload"));
-  EXPECT_FALSE(openRecord(tag("snellxxx", 1, 2), key, bytes));
-  EXPECT_FALSE(openRecord(tag("snelltst", 2, 2), key, bytes));
-  EXPECT_FALSE(openRecord(tag("snelltst", 1, 3), key, bytes));
+  EXPECT_FALSE(openRecord(recordTag("snellxxx", 1, 2), key, bytes));
+  EXPECT_FALSE(openRecord(recordTag("snelltst", 2, 2), key, bytes));
+  EXPECT_FALSE(openRecord(recordTag("snelltst", 1, 3), key, bytes));
   EXPECT_FALSE(openRecord(mine, digestOf("other"), bytes));
   EXPECT_FALSE(openRecord(mine, key, bytes.substr(0, bytes.size() - 1)));
   EXPECT_FALSE(openRecord(mine, key, bytes + "!"));

@@ -1,24 +1,12 @@
 #include "backends/vk/compiled_program_store.h"
 
-#include <cstring>
-
 #include "core/build_id.h"
 #include "core/sealed_record.h"
 
 namespace snell::vk {
 namespace {
 
-constexpr char kMagic[8] = {'s', 'n', 'e', 'l', 'l', 's', 'p', 'v'};
-constexpr std::uint32_t kFormat = 1;
-constexpr std::uint32_t kKindProgram = 1;
-
-RecordTag programTag() {
-  RecordTag tag{};
-  std::memcpy(tag.magic, kMagic, sizeof kMagic);
-  tag.format = kFormat;
-  tag.kind = kKindProgram;
-  return tag;
-}
+RecordTag programTag() { return recordTag("snellspv", /*format=*/1, /*kind=*/1); }
 
 void put(ByteWriter& w, const CompileDiagnostic& d) {
   w.put(d.stage);

@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <type_traits>
 
 #include "core/sealed_record.h"
 
 namespace snell {
 namespace {
-
-constexpr char kMagic[8] = {'s', 'n', 'e', 'l', 'l', 'o', 'r', 'c'};
 
 // Interval bounds are floats or infinities: stored in four bytes when every
 // one converts back to the same double, else in eight.
@@ -157,11 +154,7 @@ bool get(ByteReader& r, ImageComparison& c) {
 }
 
 RecordTag tagOf(Kind kind) {
-  RecordTag tag{};
-  std::memcpy(tag.magic, kMagic, sizeof kMagic);
-  tag.format = kStoredResultFormat;
-  tag.kind = static_cast<std::uint32_t>(kind);
-  return tag;
+  return recordTag("snellorc", kStoredResultFormat, static_cast<std::uint32_t>(kind));
 }
 
 template <typename T>
