@@ -18,6 +18,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double maxAbs(double lo, double hi) { return std::max(std::fabs(lo), std::fabs(hi)); }
 
+bool sameBits(double a, double b) { return fp32_bits::bitsOf(a) == fp32_bits::bitsOf(b); }
+
 bool isExactPowerOfTwo(double x) { return fp32_bits::isPositivePowerOfTwo(std::fabs(x)); }
 
 // Whether `v` is a literal +-2^n, given the error it has when closed.
@@ -130,8 +132,16 @@ void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op)
   // A single operation on closed operands has one order only: the plain
   // interval of it is exact and holds as well.
   if (ra.kind == IntervalRegion::Kind::Leaf && rb.kind == IntervalRegion::Kind::Leaf) {
-    const Range plain = op == RegionOp::Add ? float_sets::roundedSum(a.lo, a.hi, b.lo, b.hi)
-                                            : float_sets::roundedProduct(a.lo, a.hi, b.lo, b.hi);
+    // Where the operands' float sets are their ideal ranges (inputs, and
+    // closed values whose set is the tighter bound), the exact range of the
+    // plain interval is `ideal` itself: rounded out, not computed again.
+    const bool setsAreIdeal = sameBits(a.lo, av.idealLo) && sameBits(a.hi, av.idealHi) &&
+                              sameBits(b.lo, bv.idealLo) && sameBits(b.hi, bv.idealHi) &&
+                              !std::isnan(ideal.lo) && !std::isnan(ideal.hi);
+    const Range plain = setsAreIdeal          ? Range{fp32_bits::floatAtOrBelow(ideal.lo),
+                                             fp32_bits::floatAtOrAbove(ideal.hi)}
+                        : op == RegionOp::Add ? float_sets::roundedSum(a.lo, a.hi, b.lo, b.hi)
+                                              : float_sets::roundedProduct(a.lo, a.hi, b.lo, b.hi);
     set.lo = std::max(set.lo, plain.lo);
     set.hi = std::min(set.hi, plain.hi);
   }
