@@ -111,7 +111,9 @@ Physics lines, answered in double by the physics reference (--backend oracle onl
 {"fn":"ior","glass":"N-BK7"|"water","lambda_nm":589.3}, {"fn":"critical_angle","n1":1.5,"n2":1}
 and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "value".
 Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on every core
-(SNELL_EVAL_THREADS); the answers do not depend on either.)");
+(SNELL_EVAL_THREADS); the answers do not depend on either. On vk the compiled probe programs
+are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), else
+~/.cache/snell/oracle.)");
   return [options] {
     // Standard input read through C stdio, one character per call, was the
     // largest cost after start-up in a profile of a million lines; this
