@@ -133,3 +133,18 @@ TEST_F(OracleCacheCli, EvalOnVkKeepsItsCompiledPrograms) {
   const auto off = runSnell("eval --backend vk " + input.string(), "SNELL_ORACLE_CACHE=off");
   EXPECT_EQ(off.out, first.out);
 }
+
+// `run`'s vk workers keep their compiled programs in `--oracle-cache`, and
+// `off` keeps none.
+TEST_F(OracleCacheCli, RunOnVkKeepsItsCompiledPrograms) {
+  const std::string args = fmt::format(
+      "run --backend vk --filter 'orange-book/14.1-fresnel/sphere' --out {} --oracle-cache ",
+      (dir_ / "out").string());
+  const auto kept = runSnell(args + (dir_ / "store").string());
+  ASSERT_EQ(kept.code, 0) << kept.out;
+  EXPECT_GE(compiledPrograms(dir_ / "store"), 1);
+  const auto off =
+      runSnell(args + "off", fmt::format("SNELL_ORACLE_CACHE={}", (dir_ / "env").string()));
+  ASSERT_EQ(off.code, 0) << off.out;
+  EXPECT_EQ(compiledPrograms(dir_ / "env"), 0);
+}
