@@ -7,8 +7,10 @@
 
 #include "cli/commands.h"
 #include "core/errors.h"
+#include "core/heap_reuse.h"
 
 int main(int argc, char** argv) {
+  snell::keepFreedMemoryForReuse();
   CLI::App app{
       "snell: runs published reflection/refraction GLSL listings on OpenGL and Vulkan "
       "and holds the results against a spec-derived CPU oracle"};

@@ -78,11 +78,13 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
   const int components = expected.components;
   const std::size_t samples = observed.data.size() / static_cast<std::size_t>(components);
   auto alternative = expected.alternatives.begin();
+  // The ways of the sample at hand; reused, so a sample allocates nothing.
+  std::vector<Way> ways;
   for (std::size_t sample = 0; sample < samples; ++sample) {
     const std::size_t base = sample * static_cast<std::size_t>(components);
     const float* values = &observed.data[base];
     // The ways this sample may go; without alternatives, the one interval.
-    std::vector<Way> ways;
+    ways.clear();
     while (alternative != expected.alternatives.end() && alternative->sample < sample)
       ++alternative;
     if (alternative != expected.alternatives.end() && alternative->sample == sample) {
@@ -93,17 +95,22 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
       ways.push_back({&expected.reference[base], &expected.lo[base], &expected.hi[base],
                       &expected.undefined[base]});
     }
-    // Judged against the way it fits best: the smallest worst slack.
+    // Judged against the way it fits best: the smallest worst slack. With
+    // one way that is the way, and each component's slack is computed once,
+    // below.
     const Way* best = &ways[0];
-    double bestSlack = worstComponentSlack(*best, components, values);
-    bool fitsAWay = fits(*best, components, values);
-    for (std::size_t w = 1; w < ways.size(); ++w) {
-      const double s = worstComponentSlack(ways[w], components, values);
-      const bool f = fits(ways[w], components, values);
-      if ((f && !fitsAWay) || (f == fitsAWay && s < bestSlack)) {
-        best = &ways[w];
-        bestSlack = s;
-        fitsAWay = f;
+    bool fitsAWay = false;
+    if (ways.size() > 1) {
+      double bestSlack = worstComponentSlack(*best, components, values);
+      fitsAWay = fits(*best, components, values);
+      for (std::size_t w = 1; w < ways.size(); ++w) {
+        const double s = worstComponentSlack(ways[w], components, values);
+        const bool f = fits(ways[w], components, values);
+        if ((f && !fitsAWay) || (f == fitsAWay && s < bestSlack)) {
+          best = &ways[w];
+          bestSlack = s;
+          fitsAWay = f;
+        }
       }
     }
     for (int c = 0; c < components; ++c) {
@@ -118,19 +125,20 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
         check.worstSlack = s;
         check.worstVertex = sample;
       }
+      // A sample that fits a way whole passes; otherwise each component
+      // outside the nearest way's interval fails.
       if (fitsAWay || withinSpec(values[c], best->lo[c], best->hi[c])) continue;
       ++check.failed;
-      keepIfAmongWorst(check.worstFailures, {sample, c, values[c], best->reference[c],
-                                             best->lo[c], best->hi[c], s,
-                                             static_cast<int>(ways.size())});
+      keepIfAmongWorst(check.worstFailures, {sample, c, values[c], best->reference[c], best->lo[c],
+                                             best->hi[c], s, static_cast<int>(ways.size())});
     }
   }
   // Worst first; equal slack in sample order, so the order is reproducible.
   std::sort(check.worstFailures.begin(), check.worstFailures.end(),
             [](const ComponentFailure& a, const ComponentFailure& b) {
-              return a.slack != b.slack ? a.slack > b.slack
-                                        : std::pair{a.vertex, a.component} <
-                                              std::pair{b.vertex, b.component};
+              return a.slack != b.slack
+                         ? a.slack > b.slack
+                         : std::pair{a.vertex, a.component} < std::pair{b.vertex, b.component};
             });
   return check;
 }
