@@ -93,6 +93,21 @@ class ByteReader {
     take(values.data(), count * sizeof(T));
     return values;
   }
+  // An array written as Stored, read as Out (floats widened to doubles),
+  // without a Stored copy in between.
+  template <typename Stored, typename Out>
+  requires std::is_trivially_copyable_v<Stored> std::vector<Out> getArrayAs() {
+    const auto count = get<std::uint64_t>();
+    if (!fits(count, sizeof(Stored))) return {};
+    std::vector<Out> values(count);
+    for (Out& value : values) {
+      Stored stored;
+      std::memcpy(&stored, at_, sizeof stored);
+      at_ += sizeof stored;
+      value = static_cast<Out>(stored);
+    }
+    return values;
+  }
 
  private:
   bool fits(std::uint64_t count, std::size_t size) {

@@ -54,6 +54,28 @@ TEST(SealedRecord, AHugeCountIsRefusedWithoutAllocating) {
   ByteReader arrays(bytes);
   EXPECT_TRUE(arrays.getArray<double>().empty());
   EXPECT_FALSE(arrays.ok());
+  ByteReader widened(bytes);
+  EXPECT_TRUE((widened.getArrayAs<float, double>().empty()));
+  EXPECT_FALSE(widened.ok());
+}
+
+TEST(SealedRecord, FloatsReadAsDoublesKeepTheirValuesAndAShortArrayFails) {
+  ByteWriter w;
+  const float tiny = std::numeric_limits<float>::denorm_min();
+  w.putArray(std::vector<float>{0.1f, -0.0f, tiny, std::numeric_limits<float>::infinity()});
+  const std::string bytes = w.take();
+  ByteReader r(bytes);
+  const std::vector<double> values = r.getArrayAs<float, double>();
+  ASSERT_EQ(values.size(), 4u);
+  EXPECT_EQ(values[0], static_cast<double>(0.1f));
+  EXPECT_TRUE(std::signbit(values[1]));
+  EXPECT_EQ(values[2], static_cast<double>(tiny));
+  EXPECT_TRUE(std::isinf(values[3]));
+  EXPECT_TRUE(r.ok() && r.atEnd());
+  // Two floats short: nothing read, and the reader says so.
+  ByteReader cut(std::string_view(bytes).substr(0, bytes.size() - 8));
+  EXPECT_TRUE((cut.getArrayAs<float, double>().empty()));
+  EXPECT_FALSE(cut.ok());
 }
 
 }  // namespace

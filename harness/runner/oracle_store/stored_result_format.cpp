@@ -26,8 +26,7 @@ std::vector<double> getBounds(ByteReader& r) {
   const auto narrow = r.get<std::uint8_t>();
   if (narrow > 1) r.fail();
   if (narrow != 1) return r.getArray<double>();
-  const std::vector<float> floats = r.getArray<float>();
-  return {floats.begin(), floats.end()};
+  return r.getArrayAs<float, double>();
 }
 
 void putAlternative(ByteWriter& w, const OracleAlternative& way) {
