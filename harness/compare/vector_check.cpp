@@ -60,8 +60,12 @@ void keepIfAmongWorst(std::vector<ComponentFailure>& kept, const ComponentFailur
 }  // namespace
 
 std::size_t slackBin(double slack) {
+  // The first bin whose upper bound holds the slack is the number of bounds
+  // below it (they ascend); NaN is above every bound. Counted without a
+  // branch: slacks come in no order a predictor could learn.
   std::size_t bin = 0;
-  while (bin + 1 < kSlackBinUpper.size() && !(slack <= kSlackBinUpper[bin])) ++bin;
+  for (std::size_t k = 0; k + 1 < kSlackBinUpper.size(); ++k)
+    bin += static_cast<std::size_t>(!(slack <= kSlackBinUpper[k]));
   return bin;
 }
 
@@ -78,29 +82,31 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
   const int components = expected.components;
   const std::size_t samples = observed.data.size() / static_cast<std::size_t>(components);
   auto alternative = expected.alternatives.begin();
-  // The ways of the sample at hand; reused, so a sample allocates nothing.
+  // The ways of a sample with alternatives; reused, so a sample allocates
+  // nothing.
   std::vector<Way> ways;
   for (std::size_t sample = 0; sample < samples; ++sample) {
     const std::size_t base = sample * static_cast<std::size_t>(components);
     const float* values = &observed.data[base];
-    // The ways this sample may go; without alternatives, the one interval.
-    ways.clear();
     while (alternative != expected.alternatives.end() && alternative->sample < sample)
       ++alternative;
-    if (alternative != expected.alternatives.end() && alternative->sample == sample) {
+    const bool hasAlternatives =
+        alternative != expected.alternatives.end() && alternative->sample == sample;
+    // Without alternatives, the one interval; with them, the way it fits
+    // best: the smallest worst slack among those it fits whole, else among
+    // all.
+    const Way single{&expected.reference[base], &expected.lo[base], &expected.hi[base],
+                     &expected.undefined[base]};
+    const Way* best = &single;
+    bool fitsAWay = false;
+    int wayCount = 1;
+    if (hasAlternatives) {
+      ++check.withAlternatives;
+      ways.clear();
       for (const OracleAlternative& a : alternative->ways)
         ways.push_back({a.reference.data(), a.lo.data(), a.hi.data(), a.undefined.data()});
-      ++check.withAlternatives;
-    } else {
-      ways.push_back({&expected.reference[base], &expected.lo[base], &expected.hi[base],
-                      &expected.undefined[base]});
-    }
-    // Judged against the way it fits best: the smallest worst slack. With
-    // one way that is the way, and each component's slack is computed once,
-    // below.
-    const Way* best = &ways[0];
-    bool fitsAWay = false;
-    if (ways.size() > 1) {
+      wayCount = static_cast<int>(ways.size());
+      best = &ways[0];
       double bestSlack = worstComponentSlack(*best, components, values);
       fitsAWay = fits(*best, components, values);
       for (std::size_t w = 1; w < ways.size(); ++w) {
@@ -130,7 +136,7 @@ VaryingCheck checkVarying(const OracleVarying& expected, const CapturedVarying& 
       if (fitsAWay || withinSpec(values[c], best->lo[c], best->hi[c])) continue;
       ++check.failed;
       keepIfAmongWorst(check.worstFailures, {sample, c, values[c], best->reference[c], best->lo[c],
-                                             best->hi[c], s, static_cast<int>(ways.size())});
+                                             best->hi[c], s, wayCount});
     }
   }
   // Worst first; equal slack in sample order, so the order is reproducible.
