@@ -40,8 +40,8 @@ void printRunTiming(std::ostream& out, const RunTiming& timing) {
   fmt::print(out, "{}\n", total);
   for (const auto& [name, b] : timing.backends)
     fmt::print(out,
-               "{}: {} vectors checked, {:.0f} per second of case time (compile, draw, read back, "
-               "oracle, compare)\n",
+               "{}: {} vectors checked, {:.0f} per second of case time (a case's every phase, "
+               "the worker's start apart)\n",
                name, b.vectors, b.vectorsPerSecond());
   int results = 0, stored = 0;
   for (const auto& [name, b] : timing.backends) {
