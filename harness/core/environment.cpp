@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 
 namespace snell {
@@ -50,6 +52,15 @@ CubeMap makeEnvironment(int size) {
         texel[3] = 1.0f;
       }
   }
+  return map;
+}
+
+std::shared_ptr<const CubeMap> sharedEnvironment(int size) {
+  static std::mutex mutex;
+  static std::map<int, std::shared_ptr<const CubeMap>> made;
+  const std::lock_guard lock(mutex);
+  std::shared_ptr<const CubeMap>& map = made[size];
+  if (!map) map = std::make_shared<const CubeMap>(makeEnvironment(size));
   return map;
 }
 

@@ -6,11 +6,17 @@
 // show filtering. It is continuous across face edges, so seamless filtering
 // has nothing to hide, and its largest step between neighbouring texels is
 // small and known, which is what the image tolerances are derived from.
+#include <memory>
+
 #include "core/cube_map.h"
 
 namespace snell {
 
 CubeMap makeEnvironment(int size = 128);
+// The same map, made once per size in a process and shared: every scene of
+// a run draws it, and making it (a few trigonometric calls per texel) was
+// a visible part of a case's fixed cost.
+std::shared_ptr<const CubeMap> sharedEnvironment(int size);
 
 // The largest difference of any channel between two texels that a bilinear
 // footprint can mix (neighbours in a face and across a face edge).

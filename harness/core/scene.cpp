@@ -214,7 +214,7 @@ Scene build(const SceneFile& file) {
   if (!scene.indices.empty()) {
     scene.width = file.width;
     scene.height = file.height;
-    scene.environment = std::make_shared<const CubeMap>(makeEnvironment(file.environmentSize));
+    scene.environment = sharedEnvironment(file.environmentSize);
     scene.decal = std::make_shared<const Image>(makeDecal());
     // Shadertoy's iResolution: the viewport in pixels, and a pixel aspect of 1.
     scene.values["resolution"] = Value{

@@ -22,7 +22,8 @@ TEST(Environment, EachFaceIsDistinct) {
     for (int b = a + 1; b < 6; ++b) {
       double difference = 0;
       for (int c = 0; c < 3; ++c)
-        difference = std::max(difference, double(std::abs(map.faces[a][centre + c] - map.faces[b][centre + c])));
+        difference = std::max(
+            difference, double(std::abs(map.faces[a][centre + c] - map.faces[b][centre + c])));
       EXPECT_GT(difference, 0.3) << a << " " << b;
     }
 }
@@ -46,6 +47,17 @@ TEST(Environment, GridLinesAreVisible) {
   const float onLine = map.faces[4][(row * n + n / 8) * 4 + 1];
   const float between = map.faces[4][(row * n + n / 8 + n / 16) * 4 + 1];
   EXPECT_GT(onLine - between, 0.05);
+}
+
+TEST(Environment, SharedIsMadeOncePerSizeAndEqualsAFreshOne) {
+  const std::shared_ptr<const CubeMap> first = sharedEnvironment(32);
+  EXPECT_EQ(sharedEnvironment(32).get(), first.get());
+  const std::shared_ptr<const CubeMap> other = sharedEnvironment(16);
+  EXPECT_NE(other.get(), first.get());
+  EXPECT_EQ(other->size, 16);
+  const CubeMap fresh = makeEnvironment(32);
+  ASSERT_EQ(first->size, 32);
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(first->faces[f], fresh.faces[f]) << f;
 }
 
 }  // namespace
