@@ -12,32 +12,13 @@
 #include <system_error>
 #include <vector>
 
+#include "core/whole_file.h"
+
 namespace snell {
 namespace fs = std::filesystem;
 
 namespace {
-
 constexpr const char* kExtension = ".result";
-
-std::optional<std::string> readWhole(const fs::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return std::nullopt;
-  std::optional<std::string> bytes;
-  struct stat info {};
-  if (::fstat(fd, &info) == 0 && info.st_size >= 0) {
-    std::string buffer(static_cast<std::size_t>(info.st_size), '\0');
-    std::size_t done = 0;
-    while (done < buffer.size()) {
-      const ssize_t n = ::read(fd, buffer.data() + done, buffer.size() - done);
-      if (n <= 0) break;
-      done += static_cast<std::size_t>(n);
-    }
-    if (done == buffer.size()) bytes = std::move(buffer);
-  }
-  ::close(fd);
-  return bytes;
-}
-
 }  // namespace
 
 fs::path KeyedFileStore::pathOf(const Digest& key) const {
@@ -47,7 +28,7 @@ fs::path KeyedFileStore::pathOf(const Digest& key) const {
 }
 
 std::optional<std::string> KeyedFileStore::read(const Digest& key) const {
-  return readWhole(pathOf(key));
+  return readWholeFile(pathOf(key));
 }
 
 void KeyedFileStore::markUsed(const Digest& key) const {

@@ -1,11 +1,11 @@
 #include "runner/oracle_store/image_results.h"
 
-#include <fstream>
-#include <iterator>
 #include <optional>
+#include <string>
 
 #include "compare/image_io.h"
 #include "compare/image_library.h"
+#include "core/whole_file.h"
 #include "runner/oracle_store/stored_result_format.h"
 
 namespace snell {
@@ -22,13 +22,12 @@ void addImage(ContentHash& hash, const Image& image) {
 
 Image readImageKept(const OracleStore* store, const std::filesystem::path& path) {
   if (!store) return readImage(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return readImage(path);  // missing or unreadable: its own message
-  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  const std::optional<std::string> bytes = readWholeFile(path);
+  if (!bytes) return readImage(path);  // missing or unreadable: its own message
   ContentHash hash;
   hash.add(std::string_view("decoded image"));
   hash.add(std::string_view(imageWriterIdentity()));  // the decoder's build
-  hash.add(std::string_view(bytes));
+  hash.add(std::string_view(*bytes));
   return store->keptOrComputed(hash.finish(), decodeStoredImage, encodeStoredImage,
                                [&] { return readImage(path); });
 }
