@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <filesystem>
 #include <future>
 #include <map>
@@ -147,19 +148,32 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (run.cases.empty())
     throw UsageError(fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids",
                                  onlyImageCases ? "image " : "", options.filter));
-  validateCases(run.cases, options.shaders);
+  std::optional<Shard> shard;
+  if (!options.shard.empty()) shard = parseShard(options.shard);
+  // Validating the cases (a derived oracle parses its listing) and asking
+  // worker processes whether their drivers come up take about as long each
+  // and need nothing of each other: both at once. A case's own error is
+  // reported before a driver's.
+  std::future<void> validated =
+      std::async(std::launch::async, [&] { validateCases(run.cases, options.shaders); });
+  std::vector<std::string> backends;
+  std::exception_ptr backendError;
+  try {
+    backends = backendsToRun(options);
+  } catch (...) {
+    backendError = std::current_exception();
+  }
+  validated.get();
+  if (backendError) std::rethrow_exception(backendError);
   if (std::any_of(run.cases.begin(), run.cases.end(),
                   [](const Case& c) { return c.spec.has("image"); }))
     requireImageLibraryFile();
-  if (!options.shard.empty()) {
-    const Shard shard = parseShard(options.shard);
+  if (shard) {
     std::vector<Case> mine;
     for (std::size_t k = 0; k < run.cases.size(); ++k)
-      if (shard.contains(k)) mine.push_back(std::move(run.cases[k]));
+      if (shard->contains(k)) mine.push_back(std::move(run.cases[k]));
     run.cases = std::move(mine);
   }
-
-  const std::vector<std::string> backends = backendsToRun(options);
   if (!options.expectations.empty())
     run.expectations = loadExpectations(options.expectations, backends, todayUtc());
   std::map<std::string, CaseResult> resumed;
