@@ -93,4 +93,31 @@ INSTANTIATE_TEST_SUITE_P(Corpus, Malformed, ::testing::ValuesIn(corpus()),
 
 TEST(MalformedCorpus, HasAtLeastThirtyInputs) { EXPECT_GE(corpus().size(), 30u); }
 
+// The cases are validated while the workers say whether their drivers come
+// up: when both go wrong, the case's own error is the one message.
+TEST(MalformedCorpus, ACaseErrorComesBeforeADriverThatDoesNotComeUp) {
+  const fs::path errors = fs::temp_directory_path() / fmt::format("snell-both-{}.err", getpid());
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-both-out-{}", getpid());
+  const std::string command = fmt::format(
+      "{} run --backend vk --device no-such-device -j 1 --shaders {} --out {} >/dev/null 2>{}",
+      SNELL_BINARY, (kCorpus / "unknown-oracle").string(), out.string(), errors.string());
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string stderrText = readAll(errors);
+  EXPECT_EQ(std::count(stderrText.begin(), stderrText.end(), '\n'), 1) << stderrText;
+  EXPECT_NE(stderrText.find("manifest.toml:6:"), std::string::npos) << stderrText;
+  EXPECT_EQ(stderrText.find("no-such-device"), std::string::npos) << stderrText;
+  // Without the case, the driver's error is the message.
+  const std::string alone = fmt::format(
+      "{} run --backend vk --device no-such-device -j 1 --out {} >/dev/null 2>{}", SNELL_BINARY,
+      out.string(), errors.string());
+  const int aloneStatus = std::system(alone.c_str());
+  ASSERT_TRUE(WIFEXITED(aloneStatus));
+  EXPECT_EQ(WEXITSTATUS(aloneStatus), 2);
+  EXPECT_NE(readAll(errors).find("cannot be brought up"), std::string::npos) << readAll(errors);
+  fs::remove_all(out);
+  fs::remove(errors);
+}
+
 }  // namespace
