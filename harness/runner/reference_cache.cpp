@@ -4,13 +4,11 @@
 #include <sys/file.h>
 #include <unistd.h>
 
-#include <fstream>
-#include <iterator>
-
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/phase_clock.h"
+#include "core/whole_file.h"
 #include "runner/image_check.h"
 #include "runner/listing_oracles.h"
 #include "runner/oracle_store/oracle_store_key.h"
@@ -36,11 +34,6 @@ class FileLock {
  private:
   int fd_;
 };
-
-std::string contentsOf(const fs::path& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
 
 }  // namespace
 
@@ -93,7 +86,7 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
   const fs::path color = dir / "reference.exr", mask = maskImagePath(outDir_, c.id),
                  owner = dir / "reference.run";
   const FileLock lock(dir / "reference.lock");
-  const bool sharedThisRun = contentsOf(owner) == runId_;
+  const bool sharedThisRun = readWholeFile(owner).value_or("") == runId_;
   // The run's other worker rendered it: with a store, its result is there
   // (render() reads it without decoding an image file).
   if (sharedThisRun && store_) return render(c, scene, bindings);
