@@ -90,7 +90,33 @@ inline double ulp(double x) {
   return powerOfTwo ? gap * 0.5 : gap;
 }
 
+// Whether |x| is a normal float's magnitude or between two of them:
+// [2^-126, kFp32Max]. There the fp32 grid is the double grid with the low
+// 29 mantissa bits cleared, so a directed rounding to float is integer
+// arithmetic on the encoding, with no conversion in its dependency chain
+// (the conversions made these two a fifth of an interval operation). One
+// unsigned compare: NaN, infinities, denormals and 0 fall outside.
+inline constexpr std::uint64_t kFloatDropBits = 29;
+inline constexpr std::uint64_t kFloatDropMask = (std::uint64_t{1} << kFloatDropBits) - 1;
+inline bool inNormalFloatRange(std::uint64_t bits) {
+  constexpr std::uint64_t kLowest = 0x3810000000000000;   // 2^-126
+  constexpr std::uint64_t kHighest = 0x47efffffe0000000;  // kFp32Max
+  return (bits & ~kDoubleSignBit) - kLowest <= kHighest - kLowest;
+}
+
+// Rounds the magnitude toward zero, then one float step away from zero
+// where bits were dropped and `away` asks for it: the carry out of the
+// mantissa moves to the next binade, whose first float it is.
+inline double dropToFloatGrid(std::uint64_t bits, bool away) {
+  const std::uint64_t dropped = bits & kFloatDropMask;
+  const std::uint64_t step = static_cast<std::uint64_t>(away && dropped != 0) << kFloatDropBits;
+  return doubleOf(bits - dropped + step);
+}
+
 inline double floatAtOrBelow(double x) {
+  // Below x is toward zero for a positive x and away from it for a negative one.
+  const std::uint64_t xBits = bitsOf(x);
+  if (inNormalFloatRange(xBits)) return dropToFloatGrid(xBits, (xBits >> 63) != 0);
   if (x != x || x == std::numeric_limits<double>::infinity() ||
       x == -std::numeric_limits<double>::infinity())
     return x;
@@ -110,6 +136,8 @@ inline double floatAtOrBelow(double x) {
 }
 
 inline double floatAtOrAbove(double x) {
+  const std::uint64_t xBits = bitsOf(x);
+  if (inNormalFloatRange(xBits)) return dropToFloatGrid(xBits, (xBits >> 63) == 0);
   if (x != x || x == std::numeric_limits<double>::infinity() ||
       x == -std::numeric_limits<double>::infinity())
     return x;

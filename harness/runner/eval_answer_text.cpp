@@ -1,7 +1,6 @@
 #include "runner/eval_answer_text.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string_view>
@@ -21,9 +20,13 @@ void number(fmt::memory_buffer& out, double x) {
     text(out, x > 0 ? "\"inf\"" : x < 0 ? "\"-inf\"" : "\"nan\"");
     return;
   }
-  std::array<char, 64> digits;
-  const char* end = nlohmann::detail::to_chars(digits.data(), digits.data() + digits.size(), x);
-  out.append(digits.data(), end);
+  // Written in place: a copy through a local array was a call to memcpy
+  // per number, nine numbers an answer.
+  constexpr std::size_t kRoom = 64;
+  const std::size_t at = out.size();
+  out.resize(at + kRoom);
+  const char* end = nlohmann::detail::to_chars(out.data() + at, out.data() + at + kRoom, x);
+  out.resize(static_cast<std::size_t>(end - out.data()));
 }
 
 template <class Values>
