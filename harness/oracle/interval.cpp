@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <limits>
 
 #include "oracle/fp32_bits.h"
@@ -181,12 +183,41 @@ Interval Interval::point(float value) {
   return r;
 }
 
-Interval Interval::literal(double decimal) {
-  Interval r = point(nearestFloat(decimal));
+namespace {
+
+Interval makeLiteral(double decimal) {
+  Interval r = Interval::point(nearestFloat(decimal));
   if (r.undefined) return r;
   r.constant = true;
   r.folded = decimal;
   r.region = closedRegion(r);
+  return r;
+}
+
+// A listing uses a handful of literals, each on every evaluation (refract's
+// 0.0 and 1.0 four times a call): the last few made on this thread are
+// kept, keyed by the decimal's bits (0.0 and -0.0 apart).
+struct LiteralMemo {
+  static constexpr std::size_t kSize = 8;
+  std::array<std::uint64_t, kSize> keys{};
+  std::array<Interval, kSize> values{};
+  std::size_t filled = 0;
+  std::size_t next = 0;
+};
+thread_local LiteralMemo tLiterals;
+
+}  // namespace
+
+Interval Interval::literal(double decimal) {
+  const std::uint64_t key = fp32_bits::bitsOf(decimal);
+  LiteralMemo& memo = tLiterals;
+  for (std::size_t k = 0; k < memo.filled; ++k)
+    if (memo.keys[k] == key) return memo.values[k];
+  const Interval r = makeLiteral(decimal);
+  memo.keys[memo.next] = key;
+  memo.values[memo.next] = r;
+  memo.filled = std::max(memo.filled, memo.next + 1);
+  memo.next = (memo.next + 1) % LiteralMemo::kSize;
   return r;
 }
 
