@@ -99,8 +99,8 @@ inline double ulp(double x) {
 inline constexpr std::uint64_t kFloatDropBits = 29;
 inline constexpr std::uint64_t kFloatDropMask = (std::uint64_t{1} << kFloatDropBits) - 1;
 inline bool inNormalFloatRange(std::uint64_t bits) {
-  constexpr std::uint64_t kLowest = 0x3810000000000000;   // 2^-126
-  constexpr std::uint64_t kHighest = 0x47efffffe0000000;  // kFp32Max
+  constexpr std::uint64_t kLowest = std::bit_cast<std::uint64_t>(kFp32MinNormal);
+  constexpr std::uint64_t kHighest = std::bit_cast<std::uint64_t>(kFp32Max);
   return (bits & ~kDoubleSignBit) - kLowest <= kHighest - kLowest;
 }
 
