@@ -28,27 +28,6 @@ bool BranchPaths::next() {
   return true;
 }
 
-bool BranchPaths::explore(const std::function<void()>& body) {
-  prefix_.clear();
-  hullMode_ = false;
-  merged_ = false;
-  for (std::size_t paths = 1;; ++paths) {
-    if (paths > kMaxBranchPaths) {
-      hullMode_ = true;
-      taken_.clear();
-      trace_.clear();
-      body();
-      hullMode_ = false;
-      merged_ = true;
-      return false;
-    }
-    taken_.clear();
-    trace_.clear();
-    body();
-    if (!next()) return true;
-  }
-}
-
 bool BranchReplay::next() {
   if (next_ >= outcomes_.size())
     throw std::logic_error("branch replay: the evaluation took more branches than were recorded");

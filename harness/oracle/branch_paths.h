@@ -13,7 +13,6 @@
 // kMaxBranchPaths paths a sample falls back to the hull: stated, not silent
 // (explorePaths reports it).
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 namespace snell {
@@ -33,8 +32,27 @@ class BranchPaths {
 
   // Runs `body` once per path (at least once). Returns false when the paths
   // exceeded kMaxBranchPaths: `body` then ran once more with every unknown
-  // branch merged to its hull, and only that last run counts.
-  bool explore(const std::function<void()>& body);
+  // branch merged to its hull, and only that last run counts. A template,
+  // not a std::function: `snell eval` explores once a call, and a lambda
+  // holding a few references made a std::function allocate every time.
+  template <class Body>
+  bool explore(Body&& body) {
+    prefix_.clear();
+    hullMode_ = false;
+    merged_ = false;
+    for (std::size_t paths = 1;; ++paths) {
+      if (paths > kMaxBranchPaths) {
+        startRun(true);
+        body();
+        hullMode_ = false;
+        merged_ = true;
+        return false;
+      }
+      startRun(false);
+      body();
+      if (!next()) return true;
+    }
+  }
 
   // The outcomes of the run that just ended (for BranchReplay).
   const std::vector<bool>& trace() const { return trace_; }
@@ -43,6 +61,11 @@ class BranchPaths {
 
  private:
   bool next();
+  void startRun(bool hull) {
+    hullMode_ = hull;
+    taken_.clear();
+    trace_.clear();
+  }
 
   std::vector<bool> prefix_;  // forced choices at unknown branches, in order
   std::vector<bool> taken_;   // choices made at unknown branches in this run

@@ -39,8 +39,10 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
     result.value.push_back(value[k]);
     result.strict.push_back(strict[k]);
   }
-  // Every way an undecidable branch may go, each with the exact value along it.
-  BranchPaths paths;
+  // Every way an undecidable branch may go, each with the exact value along
+  // it. The explorer is kept per thread: its outcome lists keep their
+  // memory from one call to the next.
+  thread_local BranchPaths paths;
   const UseBranchPaths active(&paths);
   paths.explore([&] {
     const auto allowed = evaluate<Interval, Size>(fn, call);

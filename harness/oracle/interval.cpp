@@ -165,9 +165,12 @@ void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op)
 
 }  // namespace
 
-Interval::Interval(double low, double high) : lo(low), hi(high), idealLo(low), idealHi(high) {
-  region = leafRegion(maxAbs(low, high), 0.0, false);
-}
+Interval::Interval(double low, double high)
+    : lo(low),
+      hi(high),
+      idealLo(low),
+      idealHi(high),
+      region(leafRegion(maxAbs(low, high), 0.0, false)) {}
 
 Interval Interval::point(float value) {
   if (std::isnan(value)) return unconstrained();
