@@ -7,6 +7,7 @@ namespace {
 
 thread_local BranchPaths* tPaths = nullptr;
 thread_local BranchReplay* tReplay = nullptr;
+thread_local RecordBranches* tRecord = nullptr;
 
 }  // namespace
 
@@ -36,10 +37,17 @@ bool BranchReplay::next() {
 
 BranchPaths* activeBranchPaths() { return tPaths; }
 BranchReplay* activeBranchReplay() { return tReplay; }
+RecordBranches* activeBranchRecord() { return tRecord; }
 
 UseBranchPaths::UseBranchPaths(BranchPaths* paths) : previous_(tPaths) { tPaths = paths; }
 UseBranchPaths::~UseBranchPaths() { tPaths = previous_; }
 UseBranchReplay::UseBranchReplay(BranchReplay* replay) : previous_(tReplay) { tReplay = replay; }
 UseBranchReplay::~UseBranchReplay() { tReplay = previous_; }
+
+RecordBranches::RecordBranches(std::vector<bool>& outcomes)
+    : outcomes_(outcomes), previous_(tRecord) {
+  tRecord = this;
+}
+RecordBranches::~RecordBranches() { tRecord = previous_; }
 
 }  // namespace snell

@@ -86,9 +86,26 @@ class BranchReplay {
   std::size_t next_ = 0;
 };
 
-// The explorer / replay active on this thread (nullptr: none).
+// While one is alive, glsl::branch(bool, ...) calls on this thread append
+// their outcomes to `outcomes`: a double evaluation's own path, which
+// needs no replay along an Interval path with the same outcomes.
+class RecordBranches {
+ public:
+  explicit RecordBranches(std::vector<bool>& outcomes);
+  ~RecordBranches();
+  RecordBranches(const RecordBranches&) = delete;
+  RecordBranches& operator=(const RecordBranches&) = delete;
+  void record(bool outcome) { outcomes_.push_back(outcome); }
+
+ private:
+  std::vector<bool>& outcomes_;
+  RecordBranches* previous_;
+};
+
+// The explorer / replay / recorder active on this thread (nullptr: none).
 BranchPaths* activeBranchPaths();
 BranchReplay* activeBranchReplay();
+RecordBranches* activeBranchRecord();
 
 class UseBranchPaths {
  public:

@@ -32,7 +32,13 @@ glsl::vec<T, Size> evaluate(Builtin fn, const BuiltinCall& call) {
 
 template <int Size>
 BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
-  const auto value = evaluate<double, Size>(fn, call);
+  // The exact value along the path the double evaluation takes itself.
+  thread_local std::vector<bool> ownPath;
+  ownPath.clear();
+  const auto value = [&] {
+    const RecordBranches recording(ownPath);
+    return evaluate<double, Size>(fn, call);
+  }();
   const auto strict = evaluate<float, Size>(fn, call);
   BuiltinResult result;
   for (int k = 0; k < Size; ++k) {
@@ -46,9 +52,14 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
   const UseBranchPaths active(&paths);
   paths.explore([&] {
     const auto allowed = evaluate<Interval, Size>(fn, call);
-    BranchReplay replay(paths.trace());
-    const UseBranchReplay replaying(&replay);
-    const auto exact = evaluate<double, Size>(fn, call);
+    // Along the same outcomes the double evaluation is the one made
+    // above; along others it is made again, replaying them.
+    const auto exact = [&] {
+      if (paths.trace() == ownPath) return value;
+      BranchReplay replay(paths.trace());
+      const UseBranchReplay replaying(&replay);
+      return evaluate<double, Size>(fn, call);
+    }();
     BuiltinWay way;
     for (int k = 0; k < Size; ++k) {
       way.value.push_back(exact[k]);

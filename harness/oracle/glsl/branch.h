@@ -14,7 +14,10 @@ namespace snell::glsl {
 
 template <class Then, class Else>
 auto branch(bool condition, Then then, Else otherwise) {
-  if (BranchReplay* replay = activeBranchReplay()) condition = replay->next();
+  if (BranchReplay* replay = activeBranchReplay())
+    condition = replay->next();
+  else if (RecordBranches* record = activeBranchRecord())
+    record->record(condition);
   return condition ? then() : otherwise();
 }
 
