@@ -18,6 +18,15 @@ std::vector<std::string> splitBackendList(const std::string& list) {
   return names;
 }
 
+std::string unknownBackendReason(const std::string& name) {
+  try {
+    backendRegistry().find(name);
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "";
+}
+
 std::string describeBackends() {
   std::string text;
   for (const BackendEntry& e : backendRegistry().entries())
@@ -34,13 +43,8 @@ void addBackendOptions(CLI::App& sub, std::string& backend, std::string& device,
         if (value == "all") return "";
         const std::vector<std::string> names = splitBackendList(value);
         if (names.empty()) return "name at least one backend, or all";
-        for (const std::string& name : names) {
-          try {
-            backendRegistry().find(name);
-          } catch (const UsageError& error) {
-            return error.what();
-          }
-        }
+        for (const std::string& name : names)
+          if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
         return "";
       });
   sub.add_option("--device", device,

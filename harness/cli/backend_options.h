@@ -10,6 +10,10 @@ namespace snell::cli {
 // "gl,vk" -> {"gl", "vk"}.
 std::vector<std::string> splitBackendList(const std::string& list);
 
+// Why `name` is not a registered backend (the registry's message), or ""
+// when it is: the check of every --backend option.
+std::string unknownBackendReason(const std::string& name);
+
 // --backend (registered names, comma-separated, or all), --device, --gl-provider.
 void addBackendOptions(CLI::App& sub, std::string& backend, std::string& device,
                        std::string& glProvider);

@@ -14,6 +14,7 @@ using Command = std::function<int()>;
 Command addRunCommand(CLI::App& app);
 Command addListCommand(CLI::App& app);
 Command addEvalCommand(CLI::App& app);
+Command addServeCommand(CLI::App& app);
 Command addWorkerCommand(CLI::App& app);
 Command addBlessCommand(CLI::App& app);
 Command addMergeCommand(CLI::App& app);

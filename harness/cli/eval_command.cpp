@@ -1,3 +1,4 @@
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -9,12 +10,15 @@
 #include <string_view>
 
 #include "backends/backend.h"
-#include "backends/backend_registry.h"
+#include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "runner/block_pool.h"
 #include "runner/builtin_eval.h"
+#include "runner/eval_client.h"
+#include "runner/eval_server_protocol.h"
 #include "runner/oracle_store/oracle_store.h"
+#include "runner/unix_socket.h"
 
 namespace snell::cli {
 namespace {
@@ -62,6 +66,52 @@ class TerminalProgress {
   Clock::time_point start_, shownAt_;
 };
 
+struct EvalCliOptions {
+  std::string backend = "oracle";
+  std::string rules = "glsl";
+  std::string input = "-";
+  std::string device;
+  std::string glProvider;
+  bool server = false;
+  std::string socket;
+};
+
+// The exit code and, for malformed lines, the message on stderr.
+int reportSummary(const EvalSummary& summary, const std::string& input) {
+  if (summary.malformed) {
+    const std::string where = input == "-" ? "standard input" : input;
+    fmt::print(stderr, "snell eval: {}:{}: {}\n", input == "-" ? "<stdin>" : where,
+               summary.firstMalformedLine, summary.firstMalformedReason);
+    fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
+               summary.malformed, where);
+    return 2;
+  }
+  return summary.outsideSpec ? 1 : 0;
+}
+
+// --server: the same answers from a `snell serve` of this backend.
+int askServer(const EvalCliOptions& options) {
+  if (options.backend == "oracle")
+    throw UsageError("--server asks a driver's server: give --backend (the oracle needs none)");
+  if (!options.device.empty() || !options.glProvider.empty())
+    throw UsageError(
+        "with --server the driver is the server's: give --device or --gl-provider "
+        "to `snell serve`");
+  UniqueFd file;
+  int input = STDIN_FILENO;
+  if (options.input != "-") {
+    file = UniqueFd(::open(options.input.c_str(), O_RDONLY | O_CLOEXEC));
+    if (!file)
+      throw UsageError(
+          fmt::format("{}: cannot read this file; give a JSON Lines file or -", options.input));
+    input = file.get();
+  }
+  const std::string socket =
+      options.socket.empty() ? defaultServeSocket(options.backend) : options.socket;
+  const EvalSummary summary = evaluateOnServer(socket, options.backend, input, std::cout);
+  return reportSummary(summary, options.input);
+}
+
 }  // namespace
 
 Command addEvalCommand(CLI::App& app) {
@@ -70,23 +120,10 @@ Command addEvalCommand(CLI::App& app) {
       "Evaluate reflect/refract calls given as JSON Lines, on the oracle or a driver, and "
       "physics functions (Fresnel, dispersion, critical and Brewster angles) on the physics "
       "reference");
-  struct Options {
-    std::string backend = "oracle";
-    std::string rules = "glsl";
-    std::string input = "-";
-    std::string device;
-    std::string glProvider;
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<EvalCliOptions>();
   eval->add_option("--backend", options->backend, "oracle, or a backend (`snell devices`)")
       ->check([](const std::string& value) -> std::string {
-        if (value == "oracle") return "";
-        try {
-          backendRegistry().find(value);
-        } catch (const UsageError& error) {
-          return error.what();
-        }
-        return "";
+        return value == "oracle" ? "" : unknownBackendReason(value);
       });
   eval->add_option("--rules", options->rules,
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
@@ -98,6 +135,11 @@ Command addEvalCommand(CLI::App& app) {
   eval->add_option("--gl-provider", options->glProvider,
                    "OpenGL context provider in place of the backend's own: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));
+  eval->add_flag("--server", options->server,
+                 "Ask the `snell serve --backend BACKEND` of this user instead of starting the "
+                 "driver here");
+  eval->add_option("--socket", options->socket,
+                   "With --server: the server's socket, when it was started with --socket");
   eval->add_option("input", options->input, "JSON Lines file, or - for standard input");
   eval->footer(
       R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
@@ -119,6 +161,9 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     // largest cost after start-up in a profile of a million lines; this
     // command writes only through iostreams (stdout) and fmt (stderr).
     std::ios::sync_with_stdio(false);
+    if (!options->socket.empty() && !options->server)
+      throw UsageError("--socket names a server's socket: give it with --server");
+    if (options->server) return askServer(*options);
     std::ifstream file;
     std::istream* in = &std::cin;
     if (options->input != "-") {
@@ -147,15 +192,7 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     TerminalProgress progress;
     evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
-    if (summary.malformed) {
-      const std::string where = options->input == "-" ? "standard input" : options->input;
-      fmt::print(stderr, "snell eval: {}:{}: {}\n", options->input == "-" ? "<stdin>" : where,
-                 summary.firstMalformedLine, summary.firstMalformedReason);
-      fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
-                 summary.malformed, where);
-      return 2;
-    }
-    return summary.outsideSpec ? 1 : 0;
+    return reportSummary(summary, options->input);
   };
 }
 

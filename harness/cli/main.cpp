@@ -21,10 +21,10 @@ int main(int argc, char** argv) {
   std::map<const CLI::App*, snell::cli::Command> commands;
   for (auto add :
        {snell::cli::addRunCommand, snell::cli::addListCommand, snell::cli::addEvalCommand,
-        snell::cli::addBlessCommand, snell::cli::addMergeCommand, snell::cli::addCompareCommand,
-        snell::cli::addReportCommand, snell::cli::addWorkerCommand, snell::cli::addDevicesCommand,
-        snell::cli::addSweepCommand, snell::cli::addBenchCommand, snell::cli::addAdviseCommand,
-        snell::cli::addInitCommand}) {
+        snell::cli::addServeCommand, snell::cli::addBlessCommand, snell::cli::addMergeCommand,
+        snell::cli::addCompareCommand, snell::cli::addReportCommand, snell::cli::addWorkerCommand,
+        snell::cli::addDevicesCommand, snell::cli::addSweepCommand, snell::cli::addBenchCommand,
+        snell::cli::addAdviseCommand, snell::cli::addInitCommand}) {
     const std::size_t before = app.get_subcommands({}).size();
     snell::cli::Command run = add(app);
     commands[app.get_subcommands({}).at(before)] = std::move(run);

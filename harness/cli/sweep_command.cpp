@@ -3,7 +3,6 @@
 #include <chrono>
 #include <filesystem>
 
-#include "backends/backend_registry.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "core/errors.h"
@@ -44,13 +43,8 @@ Command addSweepCommand(CLI::App& app) {
                    "swept")
       ->check([](const std::string& value) -> std::string {
         if (splitBackendList(value).empty()) return "name at least one backend";
-        for (const std::string& name : splitBackendList(value)) {
-          try {
-            backendRegistry().find(name);
-          } catch (const UsageError& error) {
-            return error.what();
-          }
-        }
+        for (const std::string& name : splitBackendList(value))
+          if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
         return "";
       });
   sweep->add_option("--device", options->device,

@@ -36,8 +36,10 @@ inline Outcome runSnell(const std::string& args, const std::string& env = "") {
   return outcome;
 }
 
-// Starts `snell ARGS` with its output discarded, without waiting.
-inline pid_t spawnSnell(const std::vector<std::string>& args) {
+// Starts `snell ARGS` without waiting, its stdout discarded and its stderr
+// written to `stderrPath`.
+inline pid_t spawnSnell(const std::vector<std::string>& args,
+                        const std::string& stderrPath = "/dev/null") {
   std::vector<std::string> argv = {SNELL_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
   std::vector<char*> raw;
@@ -46,7 +48,8 @@ inline pid_t spawnSnell(const std::vector<std::string>& args) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   pid_t pid = -1;
   EXPECT_EQ(posix_spawn(&pid, raw[0], &actions, nullptr, raw.data(), environ), 0);
   posix_spawn_file_actions_destroy(&actions);

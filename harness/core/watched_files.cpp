@@ -1,0 +1,78 @@
+#include "core/watched_files.h"
+
+#include <fmt/format.h>
+#include <sys/stat.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string_view>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+// The paths of the regular files in /proc/self/maps. A line is
+// "address perms offset dev inode path"; anonymous mappings have no path,
+// and pseudo-files ([heap], [vdso], ...) are not files on disk. A mapped
+// file whose name was removed shows as "PATH (deleted)": it is watched
+// under PATH, which then no longer holds the loaded code.
+std::set<std::string> mappedFiles() {
+  std::set<std::string> paths;
+  std::ifstream maps("/proc/self/maps");
+  std::string line;
+  while (std::getline(maps, line)) {
+    std::istringstream fields(line);
+    std::string address, perms, offset, device, inode;
+    fields >> address >> perms >> offset >> device >> inode;
+    std::string path;
+    std::getline(fields >> std::ws, path);
+    if (path.empty() || path.front() != '/') continue;
+    constexpr std::string_view deleted = " (deleted)";
+    if (path.ends_with(deleted)) path.resize(path.size() - deleted.size());
+    paths.insert(path);
+  }
+  return paths;
+}
+
+bool sameTime(const timespec& a, const timespec& b) {
+  return a.tv_sec == b.tv_sec && a.tv_nsec == b.tv_nsec;
+}
+
+}  // namespace
+
+std::optional<WatchedFiles::Stamp> WatchedFiles::stampOf(const std::string& path) {
+  struct stat status {};
+  if (stat(path.c_str(), &status) != 0) return std::nullopt;
+  return Stamp{path, status.st_dev, status.st_ino, status.st_size, status.st_mtim};
+}
+
+WatchedFiles WatchedFiles::ofThisProcess(const std::vector<std::string>& extra) {
+  WatchedFiles watched;
+  for (const std::string& path : extra) {
+    std::optional<Stamp> stamp = stampOf(path);
+    if (!stamp)
+      throw UsageError(
+          fmt::format("{}: cannot read this file to watch it; give a file that exists", path));
+    watched.files_.push_back(std::move(*stamp));
+  }
+  for (const std::string& path : mappedFiles()) {
+    // A file already removed when the process started cannot be stamped;
+    // its code is loaded, and nothing on disk can change it any more.
+    if (std::optional<Stamp> stamp = stampOf(path)) watched.files_.push_back(std::move(*stamp));
+  }
+  return watched;
+}
+
+std::optional<std::string> WatchedFiles::firstChanged() const {
+  for (const Stamp& was : files_) {
+    const std::optional<Stamp> now = stampOf(was.path);
+    if (!now || now->device != was.device || now->inode != was.inode || now->size != was.size ||
+        !sameTime(now->modified, was.modified))
+      return was.path;
+  }
+  return std::nullopt;
+}
+
+}  // namespace snell

@@ -1,0 +1,111 @@
+#include "runner/eval_client.h"
+
+#include <fmt/format.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include "core/errors.h"
+#include "runner/eval_server_protocol.h"
+#include "runner/unix_socket.h"
+
+namespace snell {
+namespace {
+
+// The server must be this user's own: another user's socket at the same
+// path could answer anything.
+void requireOwnServer(int fd, const std::string& socketPath) {
+  ucred peer{};
+  socklen_t size = sizeof(peer);
+  if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0 || peer.uid != getuid())
+    throw UsageError(fmt::format(
+        "{}: the server here runs as another user; start your own with --socket elsewhere",
+        socketPath));
+}
+
+// Sends the input, then shuts the sending side so the server sees its end.
+// Stops early when the server is gone (it said why in its trailer).
+void sendInput(int socket, int input, std::atomic<bool>& done) {
+  std::array<char, 1 << 16> buffer;
+  for (;;) {
+    const ssize_t n = ::read(input, buffer.data(), buffer.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0 || !writeAll(socket, buffer.data(), static_cast<std::size_t>(n))) break;
+  }
+  ::shutdown(socket, SHUT_WR);
+  done = true;
+}
+
+}  // namespace
+
+EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& backend, int input,
+                             std::ostream& out) {
+  UniqueFd connection = connectTo(socketPath);
+  if (!connection)
+    throw UsageError(fmt::format(
+        "{}: no snell serve answers here ({}); start one with `snell serve --backend {}` (and "
+        "the same --socket), or leave out --server",
+        socketPath, std::strerror(errno), backend));
+  requireOwnServer(connection.get(), socketPath);
+  const std::string header = requestHeaderLine({backend, evalBuildId()});
+  if (!writeAll(connection.get(), header.c_str(), header.size()))
+    throw SetupError(fmt::format("{}: the server closed the connection at once", socketPath));
+
+  const int fd = connection.get();
+  // The sender owns nothing but its buffer. When the server ended the
+  // request early while the input (a pipe) has not ended, it is left
+  // blocked in its read: the command is about to exit with the error.
+  auto senderDone = std::make_shared<std::atomic<bool>>(false);
+  std::thread sender([fd, input, senderDone] { sendInput(fd, input, *senderDone); });
+  // Its socket is then kept open (shut, so its writes fail) rather than
+  // closed, so that its number is never reused under it.
+  struct EndSender {
+    std::thread& sender;
+    const std::atomic<bool>& done;
+    UniqueFd& connection;
+    bool answered = false;  // the server read the whole input: the sender is past its reads
+    ~EndSender() {
+      ::shutdown(connection.get(), SHUT_RDWR);
+      if (answered || done) {
+        sender.join();
+      } else {
+        sender.detach();
+        connection.release();
+      }
+    }
+  } endSender{sender, *senderDone, connection};
+
+  std::array<char, 1 << 16> buffer;
+  std::optional<std::string> trailer;
+  for (;;) {
+    const ssize_t n = ::recv(fd, buffer.data(), buffer.size(), 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    const char* begin = buffer.data();
+    const char* end = begin + n;
+    if (trailer) {
+      trailer->append(begin, end);
+      continue;
+    }
+    const char* mark = static_cast<const char*>(std::memchr(begin, kEvalTrailerMark, n));
+    out.write(begin, (mark ? mark : end) - begin);
+    if (mark) trailer.emplace(mark + 1, end);
+  }
+  out.flush();
+  if (!trailer)
+    throw SetupError(fmt::format(
+        "{}: the server closed the connection before it finished (see its log)", socketPath));
+  const EvalReply reply = parseReplyTrailer(*trailer);
+  if (!reply.error.empty()) throw SetupError(reply.error);
+  endSender.answered = true;
+  return reply.summary;
+}
+
+}  // namespace snell

@@ -1,0 +1,192 @@
+// `snell serve` and `snell eval --server` as a user runs them: the same
+// answers and exit codes as `snell eval` with the driver in its own
+// process, one clear exit-2 message for each way a request cannot be
+// answered, and a server that stops when a watched file changes.
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "snell_process.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using snell::testing::Outcome;
+using snell::testing::readText;
+using snell::testing::runSnell;
+
+// A folder of its own for each test: sockets, logs and inputs.
+struct Scratch {
+  fs::path dir;
+  explicit Scratch(const std::string& name)
+      : dir(fs::temp_directory_path() / fmt::format("snell-serve-{}-{}", name, ::getpid())) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  ~Scratch() { fs::remove_all(dir); }
+  fs::path file(const std::string& name, const std::string& text) const {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+  }
+};
+
+// `snell serve ARGS` in the background, its stderr in `log`.
+class Server {
+ public:
+  Server(const std::vector<std::string>& args, const fs::path& log) {
+    std::vector<std::string> all = {"serve"};
+    all.insert(all.end(), args.begin(), args.end());
+    pid_ = snell::testing::spawnSnell(all, log.string());
+  }
+  ~Server() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  // The exit code once it has exited within `limit`, else nothing.
+  std::optional<int> exitWithin(std::chrono::seconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < end) {
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return std::nullopt;
+  }
+  pid_t pid() const { return pid_; }
+
+ private:
+  pid_t pid_ = -1;
+};
+
+// Waits until the log says the server listens (driver start takes a while
+// on a loaded machine).
+bool listening(const fs::path& log) {
+  for (int k = 0; k < 600; ++k) {
+    if (readText(log).find(" on ") != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return false;
+}
+
+const char* kLines =
+    "{\"fn\":\"refract\",\"I\":[0.6,-0.8,0],\"N\":[0,1,0],\"eta\":0.66}\n"
+    "{\"fn\":\"reflect\",\"I\":[0.6,-0.8],\"N\":[0,1]}\n"
+    "{\"fn\":\"refract\",\"I\":[0.9,-0.1,0.42],\"N\":[0,1,0],\"eta\":1.5}\n";
+
+TEST(EvalServerCli, AnswersAsTheDriverInItsOwnProcessDoes) {
+  const Scratch scratch("same");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  const fs::path good = scratch.file("good.jsonl", kLines);
+  const fs::path bad = scratch.file("bad.jsonl", std::string(kLines) + "not json\n");
+  for (const fs::path& input : {good, bad}) {
+    const Outcome local = runSnell(fmt::format("eval --backend gl {}", input.string()));
+    const Outcome served = runSnell(
+        fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
+    EXPECT_EQ(served.code, local.code) << served.out;
+    EXPECT_EQ(served.out, local.out);
+  }
+  EXPECT_EQ(runSnell(fmt::format("eval --backend gl --server --socket {} {}", socket.string(),
+                                 good.string()))
+                .code,
+            0);
+  // Standard input too.
+  const Outcome piped = runSnell(
+      fmt::format("eval --backend gl --server --socket {} - < {}", socket.string(), good.string()));
+  EXPECT_EQ(piped.code, 0) << piped.out;
+  EXPECT_EQ(piped.out, runSnell(fmt::format("eval --backend gl {}", good.string())).out);
+  EXPECT_NE(readText(log).find("3 lines answered"), std::string::npos) << readText(log);
+}
+
+TEST(EvalServerCli, StopsWhenAWatchedFileChanges) {
+  const Scratch scratch("watch");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  const fs::path watched = scratch.file("driver.json", "{}\n");
+  const fs::path input = scratch.file("in.jsonl", kLines);
+  Server server({"--backend", "gl", "--socket", socket.string(), "--watch", watched.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  const std::string ask =
+      fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string());
+  ASSERT_EQ(runSnell(ask).code, 0);
+  std::ofstream(watched) << "{\"rebuilt\":true}\n";
+  const Outcome refused = runSnell(ask);
+  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_NE(refused.out.find(watched.string() + ": changed since this server"), std::string::npos)
+      << refused.out;
+  EXPECT_EQ(refused.out.find("\"line\""), std::string::npos) << "no answers from a stale server";
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
+  EXPECT_FALSE(fs::exists(socket)) << "a stopped server removes its socket";
+}
+
+TEST(EvalServerCli, EachUnansweredRequestIsOneExit2Message) {
+  const Scratch scratch("refuse");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  const fs::path input = scratch.file("in.jsonl", kLines);
+  const auto expectExit2 = [](const std::string& args, const std::string& message) {
+    const Outcome o = runSnell(args);
+    EXPECT_EQ(o.code, 2) << args << "\n" << o.out;
+    EXPECT_NE(o.out.find(message), std::string::npos) << args << "\n" << o.out;
+  };
+  expectExit2(
+      fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()),
+      "no snell serve answers here");
+  expectExit2(fmt::format("eval --server {}", input.string()), "give --backend");
+  expectExit2(fmt::format("eval --backend gl --socket {} {}", socket.string(), input.string()),
+              "give it with --server");
+  expectExit2(fmt::format("eval --backend gl --server --device 0 {}", input.string()),
+              "to `snell serve`");
+  const fs::path plain = scratch.file("not-a-socket", "keep me\n");
+  expectExit2(fmt::format("serve --backend gl --socket {}", plain.string()), "is not a socket");
+  EXPECT_EQ(readText(plain), "keep me\n");
+  expectExit2(
+      fmt::format("serve --backend gl --socket {}/{}", scratch.dir.string(), std::string(120, 's')),
+      "a socket path must have");
+
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  expectExit2(
+      fmt::format("eval --backend vk --server --socket {} {}", socket.string(), input.string()),
+      "runs gl, not vk");
+  expectExit2(fmt::format("serve --backend gl --socket {}", socket.string()),
+              "a server already answers here");
+  // Still serving after refusing.
+  EXPECT_EQ(runSnell(fmt::format("eval --backend gl --server --socket {} {}", socket.string(),
+                                 input.string()))
+                .code,
+            0);
+}
+
+TEST(EvalServerCli, StopsWhenIdleAndOnSigterm) {
+  const Scratch scratch("stop");
+  const fs::path idleSocket = scratch.dir / "idle.sock", idleLog = scratch.dir / "idle.log";
+  Server idle({"--backend", "gl", "--socket", idleSocket.string(), "--idle-exit", "1"}, idleLog);
+  EXPECT_EQ(idle.exitWithin(std::chrono::seconds(60)), std::optional<int>(0)) << readText(idleLog);
+  EXPECT_NE(readText(idleLog).find("stopped: no request for 1 s"), std::string::npos)
+      << readText(idleLog);
+  EXPECT_FALSE(fs::exists(idleSocket));
+
+  const fs::path socket = scratch.dir / "term.sock", log = scratch.dir / "term.log";
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  ::kill(server.pid(), SIGTERM);
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
+  EXPECT_FALSE(fs::exists(socket));
+}
+
+}  // namespace

@@ -1,0 +1,64 @@
+// WatchedFiles notices each way a file can change under a running process.
+#include "core/watched_files.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/errors.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using snell::WatchedFiles;
+
+struct WatchedFile : ::testing::Test {
+  fs::path dir = fs::temp_directory_path() / fmt::format("snell-watched-{}", ::getpid());
+  fs::path file = dir / "driver.so";
+  void SetUp() override {
+    fs::create_directories(dir);
+    std::ofstream(file) << "version 1";
+  }
+  void TearDown() override { fs::remove_all(dir); }
+};
+
+TEST_F(WatchedFile, UnchangedFilesAreNotReported) {
+  const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
+  EXPECT_GT(watched.size(), 1u) << "the process's own mapped files are watched too";
+  EXPECT_EQ(watched.firstChanged(), std::nullopt);
+}
+
+TEST_F(WatchedFile, RewrittenInPlaceIsReported) {
+  const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
+  std::ofstream(file) << "version 2";  // same inode, new size and time
+  EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, TouchedIsReported) {
+  const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(5));
+  EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, ReplacedByRenameIsReported) {
+  const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
+  const fs::path next = dir / "driver.so.new";
+  std::ofstream(next) << "version 1";  // same size: only the inode tells
+  fs::rename(next, file);
+  EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, RemovedIsReported) {
+  const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
+  fs::remove(file);
+  EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, AFileThatCannotBeReadIsAUsageError) {
+  EXPECT_THROW(WatchedFiles::ofThisProcess({(dir / "missing").string()}), snell::UsageError);
+}
+
+}  // namespace
