@@ -13,11 +13,13 @@
 namespace snell {
 namespace {
 
-// The paths of the regular files in /proc/self/maps. A line is
-// "address perms offset dev inode path"; anonymous mappings have no path,
-// and pseudo-files ([heap], [vdso], ...) are not files on disk. A mapped
-// file whose name was removed shows as "PATH (deleted)": it is watched
-// under PATH, which then no longer holds the loaded code.
+// The files whose code is mapped into this process: the executable
+// mappings of /proc/self/maps. A line is "address perms offset dev inode
+// path"; anonymous mappings have no path, and pseudo-files ([vdso], ...)
+// are not files on disk. Data files a driver maps (Mesa's shader cache
+// index, which grows as the cache fills) are not code and are left out. A
+// mapped file whose name was removed shows as "PATH (deleted)": it is
+// watched under PATH, which then no longer holds the loaded code.
 std::set<std::string> mappedFiles() {
   std::set<std::string> paths;
   std::ifstream maps("/proc/self/maps");
@@ -28,7 +30,7 @@ std::set<std::string> mappedFiles() {
     fields >> address >> perms >> offset >> device >> inode;
     std::string path;
     std::getline(fields >> std::ws, path);
-    if (path.empty() || path.front() != '/') continue;
+    if (path.empty() || path.front() != '/' || perms.size() < 3 || perms[2] != 'x') continue;
     constexpr std::string_view deleted = " (deleted)";
     if (path.ends_with(deleted)) path.resize(path.size() - deleted.size());
     paths.insert(path);

@@ -1,7 +1,7 @@
 #pragma once
 // Files whose change makes a long-lived process out of date: the code it
-// has loaded (its executable, the driver libraries, every shared object in
-// /proc/self/maps) and any others named. A process that answers requests
+// has loaded (its executable, the driver libraries: every file mapped
+// executable in /proc/self/maps) and any others named. A process that answers requests
 // for hours (`snell serve`) checks them before each request, so that a
 // rebuilt driver or snell is never judged by code that is no longer on disk.
 #include <sys/types.h>
@@ -15,7 +15,7 @@ namespace snell {
 
 class WatchedFiles {
  public:
-  // The files mapped into this process now (read from /proc/self/maps),
+  // The files of code mapped into this process now (/proc/self/maps),
   // and `extra`, each as it is on disk now. Throws UsageError for an extra
   // file that cannot be read.
   static WatchedFiles ofThisProcess(const std::vector<std::string>& extra = {});

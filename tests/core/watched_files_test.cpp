@@ -1,8 +1,10 @@
 // WatchedFiles notices each way a file can change under a running process.
 #include "core/watched_files.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -55,6 +57,19 @@ TEST_F(WatchedFile, RemovedIsReported) {
   const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
   fs::remove(file);
   EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, ADataFileMappedByTheProcessIsNotCode) {
+  // As a driver maps its shader cache's index, which changes as it fills.
+  const int fd = ::open(file.c_str(), O_RDONLY);
+  ASSERT_GE(fd, 0);
+  void* data = ::mmap(nullptr, 9, PROT_READ, MAP_SHARED, fd, 0);
+  ASSERT_NE(data, MAP_FAILED);
+  const WatchedFiles watched = WatchedFiles::ofThisProcess();
+  std::ofstream(file) << "version 2";
+  EXPECT_EQ(watched.firstChanged(), std::nullopt);
+  ::munmap(data, 9);
+  ::close(fd);
 }
 
 TEST_F(WatchedFile, AFileThatCannotBeReadIsAUsageError) {
