@@ -31,8 +31,9 @@ struct ServeOptions {
 
 class EvalServer {
  public:
-  // Listens at options.socketPath (see listenAt) and takes the snapshot of
-  // the loaded code, so `backend` must already be up.
+  // Answers one call of each probe program (so that no request pays for
+  // their compiles), listens at options.socketPath (see listenAt) and takes
+  // the snapshot of the loaded code: `backend` must already be up.
   EvalServer(Backend& backend, std::string backendName, ServeOptions options);
   ~EvalServer();  // removes the socket file, if it is still this server's
   EvalServer(const EvalServer&) = delete;
@@ -54,7 +55,7 @@ class EvalServer {
   PrecisionRules rules_;
   std::string build_;
   UniqueFd listening_;
-  ino_t socketInode_;  // of the socket file this server bound
+  ino_t socketInode_ = 0;  // of the socket file this server bound
   WatchedFiles watched_;
 };
 
