@@ -183,10 +183,10 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
   if (!reply.error.empty())
     fmt::print(log, "snell serve: a request failed after {:.3f} s: {}\n", seconds, reply.error);
   else
-    fmt::print(log,
-               "snell serve: {} lines answered ({} outside the spec, {} malformed) in {:.3f} s{}\n",
-               reply.summary.answered, reply.summary.outsideSpec, reply.summary.malformed, seconds,
-               delivered ? "" : "; the client left before the end");
+    fmt::print(
+        log, "snell serve: {} line{} answered ({} outside the spec, {} malformed) in {:.3f} s{}\n",
+        reply.summary.answered, reply.summary.answered == 1 ? "" : "s", reply.summary.outsideSpec,
+        reply.summary.malformed, seconds, delivered ? "" : "; the client left before the end");
   std::fflush(log);
   return true;
 }
