@@ -5,6 +5,7 @@
 #include <charconv>
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <string_view>
@@ -76,6 +77,22 @@ struct EvalCliOptions {
   std::string socket;
 };
 
+// A path given as the input must be a file that can be read (a folder
+// opens, and reads as empty input).
+void requireReadableFile(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw UsageError(fmt::format("{}: is a folder; give a JSON Lines file or -", path));
+}
+
+// The answers must all have reached standard output (a full disk, a
+// closed pipe): otherwise the exit code would vouch for answers nobody has.
+void requireAnswersWritten() {
+  std::cout.flush();
+  if (!std::cout)
+    throw SetupError("cannot write the answers to standard output (disk full or pipe closed?)");
+}
+
 // The exit code and, for malformed lines, the message on stderr.
 int reportSummary(const EvalSummary& summary, const std::string& input) {
   if (summary.malformed) {
@@ -100,6 +117,7 @@ int askServer(const EvalCliOptions& options) {
   UniqueFd file;
   int input = STDIN_FILENO;
   if (options.input != "-") {
+    requireReadableFile(options.input);
     file = UniqueFd(::open(options.input.c_str(), O_RDONLY | O_CLOEXEC));
     if (!file)
       throw UsageError(
@@ -109,6 +127,7 @@ int askServer(const EvalCliOptions& options) {
   const std::string socket =
       options.socket.empty() ? defaultServeSocket(options.backend) : options.socket;
   const EvalSummary summary = evaluateOnServer(socket, options.backend, input, std::cout);
+  requireAnswersWritten();
   return reportSummary(summary, options.input);
 }
 
@@ -167,6 +186,7 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     std::ifstream file;
     std::istream* in = &std::cin;
     if (options->input != "-") {
+      requireReadableFile(options->input);
       file.open(options->input);
       if (!file)
         throw UsageError(
@@ -192,6 +212,7 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     TerminalProgress progress;
     evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
+    requireAnswersWritten();
     return reportSummary(summary, options->input);
   };
 }

@@ -8,6 +8,7 @@
 #include "runner/block_pool.h"
 #include "runner/eval_server.h"
 #include "runner/eval_server_protocol.h"
+#include "runner/interrupt_flag.h"
 #include "runner/oracle_store/oracle_store.h"
 
 namespace snell::cli {
@@ -50,6 +51,9 @@ stops, so a rebuilt driver is never judged by the old one. Requests are answered
 time, each exactly as `snell eval --backend BACKEND` would answer it, and logged on stderr.
 Only its own user's `snell eval --server` of the same build is answered.)");
   return [options] {
+    // First: a signal from here on stops the server cleanly (no socket
+    // file left behind), whatever it is doing.
+    const InterruptFlag interrupt;
     BackendOptions backendOptions;
     backendOptions.device = options->device;
     backendOptions.glProvider = options->glProvider;
@@ -61,7 +65,7 @@ Only its own user's `snell eval --server` of the same build is answered.)");
     serveOptions.watch = options->watch;
     serveOptions.idleExit = std::chrono::seconds(options->idleExit);
     serveOptions.eval.threads = defaultEvalThreads();
-    EvalServer server(*backend, options->backend, serveOptions);
+    EvalServer server(*backend, options->backend, serveOptions, interrupt);
     const DriverInfo& driver = backend->driverInfo();
     fmt::print(stderr, "snell serve: {} ({}) on {}, watching {} files; pid {}\n", options->backend,
                driver.renderer, serveOptions.socketPath, server.watchedFiles(), getpid());

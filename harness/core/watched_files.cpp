@@ -4,7 +4,7 @@
 #include <sys/stat.h>
 
 #include <fstream>
-#include <set>
+#include <map>
 #include <sstream>
 #include <string_view>
 
@@ -20,8 +20,9 @@ namespace {
 // index, which grows as the cache fills) are not code and are left out. A
 // mapped file whose name was removed shows as "PATH (deleted)": it is
 // watched under PATH, which then no longer holds the loaded code.
-std::set<std::string> mappedFiles() {
-  std::set<std::string> paths;
+// Path -> whether its name was removed since it was mapped.
+std::map<std::string, bool> mappedFiles() {
+  std::map<std::string, bool> paths;
   std::ifstream maps("/proc/self/maps");
   std::string line;
   while (std::getline(maps, line)) {
@@ -32,8 +33,9 @@ std::set<std::string> mappedFiles() {
     std::getline(fields >> std::ws, path);
     if (path.empty() || path.front() != '/' || perms.size() < 3 || perms[2] != 'x') continue;
     constexpr std::string_view deleted = " (deleted)";
-    if (path.ends_with(deleted)) path.resize(path.size() - deleted.size());
-    paths.insert(path);
+    const bool removed = path.ends_with(deleted);
+    if (removed) path.resize(path.size() - deleted.size());
+    paths[path] = paths[path] || removed;
   }
   return paths;
 }
@@ -59,16 +61,22 @@ WatchedFiles WatchedFiles::ofThisProcess(const std::vector<std::string>& extra) 
           fmt::format("{}: cannot read this file to watch it; give a file that exists", path));
     watched.files_.push_back(std::move(*stamp));
   }
-  for (const std::string& path : mappedFiles()) {
-    // A file already removed when the process started cannot be stamped;
-    // its code is loaded, and nothing on disk can change it any more.
-    if (std::optional<Stamp> stamp = stampOf(path)) watched.files_.push_back(std::move(*stamp));
+  for (const auto& [path, removed] : mappedFiles()) {
+    // Code whose file was removed or replaced (a library reinstalled)
+    // while the process was starting is out of date already.
+    std::optional<Stamp> stamp = stampOf(path);
+    if (removed || !stamp) {
+      watched.files_.push_back(Stamp{path, 0, 0, 0, {}, true});
+    } else {
+      watched.files_.push_back(std::move(*stamp));
+    }
   }
   return watched;
 }
 
 std::optional<std::string> WatchedFiles::firstChanged() const {
   for (const Stamp& was : files_) {
+    if (was.changedAlready) return was.path;
     const std::optional<Stamp> now = stampOf(was.path);
     if (!now || now->device != was.device || now->inode != was.inode || now->size != was.size ||
         !sameTime(now->modified, was.modified))

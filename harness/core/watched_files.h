@@ -33,6 +33,7 @@ class WatchedFiles {
     ino_t inode = 0;
     off_t size = 0;
     timespec modified{};
+    bool changedAlready = false;  // mapped from a file since removed
   };
   static std::optional<Stamp> stampOf(const std::string& path);
 

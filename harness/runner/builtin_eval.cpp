@@ -46,6 +46,18 @@ struct BlockOutput {
   EvalSummary summary;
 };
 
+// An answer that quotes the input (a parse error's "last read") may hold
+// bytes that are not UTF-8: written as U+FFFD, not thrown.
+std::string dumpText(const json& answer) {
+  return answer.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// The same text with each byte that is not UTF-8 as U+FFFD, as the answer
+// writes it: the message on stderr then says what the answer says.
+std::string validUtf8(const std::string& text) {
+  return json::parse(dumpText(text)).get<std::string>();
+}
+
 void parseLine(Line& line, std::string_view text, bool onDriver) {
   if (text.find_first_not_of(" \t\r") == std::string_view::npos) {
     line.blank = true;
@@ -83,18 +95,18 @@ void answerLine(const Line& line, const BuiltinResult* oracle, bool onDriver, Pr
     ++summary.answered;
     json out = {{"line", line.number}};
     out.update(*line.physics);
-    block.text.append(out.dump());
+    block.text.append(dumpText(out));
     block.text.push_back('\n');
     return;
   }
   if (!line.call) {
     if (!summary.malformed++) {
       summary.firstMalformedLine = line.number;
-      summary.firstMalformedReason = line.error;
+      summary.firstMalformedReason = validUtf8(line.error);
     }
     const json out = {{"line", line.number},
                       {"error", fmt::format("line {}: {}", line.number, line.error)}};
-    block.text.append(out.dump());
+    block.text.append(dumpText(out));
     block.text.push_back('\n');
     return;
   }

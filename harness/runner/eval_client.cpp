@@ -62,8 +62,15 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
   // The sender owns nothing but its buffer. When the server ended the
   // request early while the input (a pipe) has not ended, it is left
   // blocked in its read: the command is about to exit with the error.
+  // It reads a descriptor of its own, so the caller may close `input`.
+  const int ownInput = ::dup(input);
+  if (ownInput < 0)
+    throw SetupError(fmt::format("cannot read the input: {}", std::strerror(errno)));
   auto senderDone = std::make_shared<std::atomic<bool>>(false);
-  std::thread sender([fd, input, senderDone] { sendInput(fd, input, *senderDone); });
+  std::thread sender([fd, ownInput, senderDone] {
+    sendInput(fd, ownInput, *senderDone);
+    ::close(ownInput);
+  });
   // Its socket is then kept open (shut, so its writes fail) rather than
   // closed, so that its number is never reused under it.
   struct EndSender {
@@ -99,6 +106,7 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
     if (mark) trailer.emplace(mark + 1, end);
   }
   out.flush();
+  if (!out) throw SetupError("cannot write the answers (standard output failed)");
   if (!trailer)
     throw SetupError(fmt::format(
         "{}: the server closed the connection before it finished (see its log)", socketPath));

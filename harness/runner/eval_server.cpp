@@ -18,34 +18,36 @@
 #include "core/errors.h"
 #include "runner/eval_server_protocol.h"
 #include "runner/interrupt_flag.h"
+#include "runner/socket_input.h"
 
 namespace snell {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// The header line, read a byte at a time so that nothing of the input
-// after it is taken from the socket. A client gets this long to send it.
+// The header line: this long at most, sent within this long. Then the
+// input: a client may send nothing for this long before its request ends
+// (a slow pipe is fine; one left open and forgotten holds no server).
 constexpr std::size_t kMaxHeader = 4096;
-constexpr int kHeaderSeconds = 10;
+constexpr std::chrono::seconds kHeaderSeconds{10};
+constexpr std::chrono::seconds kInputStallSeconds{60};
+// A client that stops reading the answers is let go after this long.
+constexpr int kAnswerStallSeconds = 60;
 
-std::string readHeaderLine(int fd) {
-  timeval limit{kHeaderSeconds, 0};
-  setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &limit, sizeof(limit));
+std::string readHeaderLine(std::istream& in) {
   std::string line;
-  char c = 0;
-  while (line.size() < kMaxHeader) {
-    const ssize_t n = ::recv(fd, &c, 1, 0);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    if (c == '\n') {
-      timeval none{0, 0};
-      setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &none, sizeof(none));
-      return line;
-    }
-    line.push_back(c);
+  for (int c = in.get(); c != std::char_traits<char>::eof(); c = in.get()) {
+    if (c == '\n') return line;
+    if (line.size() == kMaxHeader) break;
+    line.push_back(static_cast<char>(c));
   }
   throw UsageError("no request header arrived (not a snell eval --server client?)");
+}
+
+bool sameUser(int fd) {
+  ucred peer{};
+  socklen_t size = sizeof(peer);
+  return getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) == 0 && peer.uid == getuid();
 }
 
 ino_t inodeOf(const std::string& path) {
@@ -73,10 +75,12 @@ std::string warmUpLines() {
 
 }  // namespace
 
-EvalServer::EvalServer(Backend& backend, std::string backendName, ServeOptions options)
+EvalServer::EvalServer(Backend& backend, std::string backendName, ServeOptions options,
+                       const InterruptFlag& interrupt)
     : backend_(backend),
       backendName_(std::move(backendName)),
       options_(std::move(options)),
+      interrupt_(interrupt),
       rules_(precisionRulesForApi(backend.driverInfo().api)),
       build_(evalBuildId()) {
   std::istringstream in(warmUpLines());
@@ -85,10 +89,12 @@ EvalServer::EvalServer(Backend& backend, std::string backendName, ServeOptions o
   if (warmUp.answered != 8 || warmUp.malformed != 0)
     throw SetupError(fmt::format("the {} probe programs did not answer at start: {}", backendName_,
                                  answers.str()));
+  // After the warm-up, which may load more of the driver's code, and
+  // before the socket exists: a --watch file that cannot be read stops
+  // the server with nothing to clean up.
+  watched_ = WatchedFiles::ofThisProcess(options_.watch);
   listening_ = listenAt(options_.socketPath);
   socketInode_ = inodeOf(options_.socketPath);
-  // After the warm-up: it may load more of the driver's code.
-  watched_ = WatchedFiles::ofThisProcess(options_.watch);
 }
 
 EvalServer::~EvalServer() {
@@ -99,17 +105,18 @@ EvalServer::~EvalServer() {
 }
 
 std::string EvalServer::run(std::FILE* log) {
-  const InterruptFlag interrupt;
   // A client that leaves mid-answer must end its request, not the server.
   std::signal(SIGPIPE, SIG_IGN);
   Clock::time_point lastRequest = Clock::now();
   for (;;) {
-    if (interrupt.signal()) return fmt::format("stopped by signal {}", interrupt.signal());
+    if (interrupt_.signal()) return fmt::format("stopped by signal {}", interrupt_.signal());
     pollfd waiting{listening_.get(), POLLIN, 0};
     const int ready = ::poll(&waiting, 1, 1000);
     if (ready < 0 && errno != EINTR)
       throw SetupError(fmt::format("waiting for requests failed: {}", std::strerror(errno)));
     if (ready <= 0) {
+      if (inodeOf(options_.socketPath) != socketInode_)
+        return fmt::format("its socket {} was removed or replaced", options_.socketPath);
       if (options_.idleExit.count() > 0 && Clock::now() - lastRequest >= options_.idleExit)
         return fmt::format("no request for {} s", options_.idleExit.count());
       continue;
@@ -133,9 +140,17 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     fmt::print(log, "snell serve: refused a request: {}\n", reply.error);
     std::fflush(log);
   };
+  if (!sameUser(fd)) {
+    refuse(fmt::format("this server (pid {}) answers only its own user's snell eval", getpid()));
+    return true;
+  }
+  timeval answerLimit{kAnswerStallSeconds, 0};
+  setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &answerLimit, sizeof(answerLimit));
+  SocketInput input(fd, interrupt_.flag(), kHeaderSeconds);
+  std::istream in(&input);
   EvalRequest request;
   try {
-    request = parseRequestHeader(readHeaderLine(fd));
+    request = parseRequestHeader(readHeaderLine(in));
   } catch (const UsageError& error) {
     refuse(error.what());
     return true;
@@ -165,16 +180,41 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     return false;
   }
   // The rest of the connection is the input, then room for the answers.
-  __gnu_cxx::stdio_filebuf<char> inBuffer(::dup(fd), std::ios::in, 1 << 16);
+  input.setStallLimit(kInputStallSeconds);
   __gnu_cxx::stdio_filebuf<char> outBuffer(::dup(fd), std::ios::out, 1 << 16);
-  std::istream in(&inBuffer);
   std::ostream out(&outBuffer);
   try {
     reply.summary = evaluateLines(in, out, &backend_, rules_, options_.eval);
-  } catch (const UsageError& error) {
+  } catch (const std::exception& error) {
+    // Whatever one request does, the server stays up for the next.
     reply.error = error.what();
-  } catch (const SetupError& error) {
-    reply.error = error.what();
+  }
+  bool goOn = true;
+  if (reply.error.empty()) {
+    switch (input.end()) {
+      case SocketInput::End::Stopped:
+        reply.error = fmt::format(
+            "this server (pid {}) was stopped (signal {}) during the request: the answers above "
+            "are of the lines it had read, not of all",
+            getpid(), interrupt_.signal());
+        reply.serverStopped = true;
+        why = fmt::format("stopped by signal {}", interrupt_.signal());
+        goOn = false;
+        break;
+      case SocketInput::End::Stalled:
+        reply.error = fmt::format(
+            "the input sent nothing for {} s and the server ended the request: the answers above "
+            "are of the lines it had read, not of all",
+            kInputStallSeconds.count());
+        break;
+      case SocketInput::End::Failed:
+        reply.error =
+            "reading the request failed: the answers above are of the lines read before, not of "
+            "all";
+        break;
+      default:
+        break;
+    }
   }
   out.flush();
   const std::string trailer = replyTrailerLine(reply);
@@ -188,7 +228,7 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
         reply.summary.answered, reply.summary.answered == 1 ? "" : "s", reply.summary.outsideSpec,
         reply.summary.malformed, seconds, delivered ? "" : "; the client left before the end");
   std::fflush(log);
-  return true;
+  return goOn;
 }
 
 }  // namespace snell

@@ -15,6 +15,7 @@
 #include "backends/backend.h"
 #include "core/watched_files.h"
 #include "runner/builtin_eval.h"
+#include "runner/interrupt_flag.h"
 #include "runner/unix_socket.h"
 
 namespace snell {
@@ -34,7 +35,11 @@ class EvalServer {
   // Answers one call of each probe program (so that no request pays for
   // their compiles), listens at options.socketPath (see listenAt) and takes
   // the snapshot of the loaded code: `backend` must already be up.
-  EvalServer(Backend& backend, std::string backendName, ServeOptions options);
+  // `interrupt` is installed by the caller before the driver starts, so
+  // that SIGINT/SIGTERM at any point stop the server through its
+  // destructor (which removes the socket).
+  EvalServer(Backend& backend, std::string backendName, ServeOptions options,
+             const InterruptFlag& interrupt);
   ~EvalServer();  // removes the socket file, if it is still this server's
   EvalServer(const EvalServer&) = delete;
   EvalServer& operator=(const EvalServer&) = delete;
@@ -52,6 +57,7 @@ class EvalServer {
   Backend& backend_;
   std::string backendName_;
   ServeOptions options_;
+  const InterruptFlag& interrupt_;
   PrecisionRules rules_;
   std::string build_;
   UniqueFd listening_;

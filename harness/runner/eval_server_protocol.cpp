@@ -42,7 +42,9 @@ std::string replyTrailerLine(const EvalReply& reply) {
                   {"first_malformed_reason", s.firstMalformedReason},
                   {"server_stopped", reply.serverStopped}};
   if (!reply.error.empty()) trailer["error"] = reply.error;
-  return std::string(1, kEvalTrailerMark) + trailer.dump() + '\n';
+  // The reasons may quote input that is not UTF-8.
+  return std::string(1, kEvalTrailerMark) +
+         trailer.dump(-1, ' ', false, json::error_handler_t::replace) + '\n';
 }
 
 EvalReply parseReplyTrailer(std::string_view line) {

@@ -54,14 +54,28 @@ UniqueFd listenAt(const std::string& path) {
     if (connectTo(path))
       throw UsageError(fmt::format(
           "{}: a server already answers here; stop it first, or give another --socket", path));
-    ::unlink(path.c_str());  // left by a server that is gone
+    // Only a socket nobody listens on is one left by a server that is gone
+    // (any other failure, a full backlog say, may be a live server's).
+    if (errno != ECONNREFUSED)
+      throw UsageError(
+          fmt::format("{}: a socket is here and did not refuse a connection ({}); "
+                      "give another --socket",
+                      path, std::strerror(errno)));
+    ::unlink(path.c_str());
   }
   UniqueFd fd(::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0));
   if (!fd) throw SetupError(fmt::format("cannot make a socket: {}", std::strerror(errno)));
-  if (::bind(fd.get(), reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0 ||
-      ::listen(fd.get(), 16) != 0)
+  if (::bind(fd.get(), reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0)
     throw SetupError(fmt::format("{}: cannot listen here: {}; give another --socket", path,
                                  std::strerror(errno)));
+  // Connecting needs write permission on the socket file: its owner only
+  // (the server also checks each client's user).
+  if (::chmod(path.c_str(), 0600) != 0 || ::listen(fd.get(), 16) != 0) {
+    const int error = errno;
+    ::unlink(path.c_str());
+    throw SetupError(fmt::format("{}: cannot listen here: {}; give another --socket", path,
+                                 std::strerror(error)));
+  }
   return fd;
 }
 

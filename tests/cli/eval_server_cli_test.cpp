@@ -74,10 +74,13 @@ class Server {
 };
 
 // Waits until the log says the server listens (driver start takes a while
-// on a loaded machine).
+// on a loaded machine): its first line, "snell serve: BACKEND (...) on
+// SOCKET, watching N files; pid P".
 bool listening(const fs::path& log) {
   for (int k = 0; k < 600; ++k) {
-    if (readText(log).find(" on ") != std::string::npos) return true;
+    const std::string text = readText(log);
+    if (text.rfind("snell serve: ", 0) == 0 && text.find("; pid ") != std::string::npos)
+      return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   return false;
@@ -187,6 +190,69 @@ TEST(EvalServerCli, StopsWhenIdleAndOnSigterm) {
   ::kill(server.pid(), SIGTERM);
   EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
   EXPECT_FALSE(fs::exists(socket));
+}
+
+TEST(EvalServerCli, ALineThatIsNotUtf8IsAnsweredAndTheServerStaysUp) {
+  const Scratch scratch("utf8");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  const fs::path input = scratch.file("in.jsonl", std::string(kLines) + "{\"fn\":\"\xff\"}\n");
+  const fs::path good = scratch.file("good.jsonl", kLines);
+  const Outcome local = runSnell(fmt::format("eval --backend gl {}", input.string()));
+  EXPECT_EQ(local.code, 2) << local.out;
+  EXPECT_NE(local.out.find(fmt::format("{}:4: ", input.string())), std::string::npos) << local.out;
+  EXPECT_EQ(local.out.find("internal error"), std::string::npos) << local.out;
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  const Outcome served = runSnell(
+      fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
+  EXPECT_EQ(served.code, 2) << served.out;
+  EXPECT_EQ(served.out, local.out);
+  EXPECT_EQ(runSnell(fmt::format("eval --backend gl --server --socket {} {}", socket.string(),
+                                 good.string()))
+                .code,
+            0)
+      << readText(log);
+}
+
+TEST(EvalServerCli, SigtermDuringARequestStopsTheServerAndFailsTheRequest) {
+  const Scratch scratch("busy");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  const fs::path input = scratch.file("in.jsonl", kLines);
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  // A client whose input stays open for 8 s after its lines.
+  Outcome client;
+  std::thread asking([&] {
+    client = runSnell(fmt::format("eval --backend gl --server --socket {}", socket.string()),
+                      fmt::format("(cat {}; sleep 8) |", input.string()));
+  });
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  ::kill(server.pid(), SIGTERM);
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(4)), std::optional<int>(0)) << readText(log);
+  asking.join();
+  EXPECT_EQ(client.code, 2) << client.out;
+  EXPECT_NE(client.out.find("was stopped (signal 15) during the request"), std::string::npos)
+      << client.out;
+  EXPECT_FALSE(fs::exists(socket));
+}
+
+TEST(EvalServerCli, StopsWhenItsSocketIsRemoved) {
+  const Scratch scratch("removed");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  fs::remove(socket);
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
+  EXPECT_NE(readText(log).find("was removed or replaced"), std::string::npos) << readText(log);
+}
+
+TEST(EvalServerCli, AFolderAsInputIsExit2) {
+  const Scratch scratch("folder");
+  for (const char* flags : {"", "--backend gl --server --socket /nonexistent.sock"}) {
+    const Outcome o = runSnell(fmt::format("eval {} {}", flags, scratch.dir.string()));
+    EXPECT_EQ(o.code, 2) << o.out;
+    EXPECT_NE(o.out.find("is a folder"), std::string::npos) << o.out;
+  }
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ TEST_F(WatchedFile, UnchangedFilesAreNotReported) {
 
 TEST_F(WatchedFile, RewrittenInPlaceIsReported) {
   const WatchedFiles watched = WatchedFiles::ofThisProcess({file.string()});
-  std::ofstream(file) << "version 2";  // same inode, new size and time
+  std::ofstream(file) << "version 22";  // same inode, a new size (and time)
   EXPECT_EQ(watched.firstChanged(), file.string());
 }
 
@@ -59,17 +59,48 @@ TEST_F(WatchedFile, RemovedIsReported) {
   EXPECT_EQ(watched.firstChanged(), file.string());
 }
 
+// `file` mapped into this process as `protection`, for the life of the
+// object (a driver library, or the shader cache index a driver maps).
+struct Mapping {
+  void* data = MAP_FAILED;
+  int fd = -1;
+  Mapping(const fs::path& path, int protection) : fd(::open(path.c_str(), O_RDONLY)) {
+    if (fd >= 0) data = ::mmap(nullptr, 9, protection, MAP_PRIVATE, fd, 0);
+  }
+  ~Mapping() {
+    if (data != MAP_FAILED) ::munmap(data, 9);
+    if (fd >= 0) ::close(fd);
+  }
+};
+
 TEST_F(WatchedFile, ADataFileMappedByTheProcessIsNotCode) {
-  // As a driver maps its shader cache's index, which changes as it fills.
-  const int fd = ::open(file.c_str(), O_RDONLY);
-  ASSERT_GE(fd, 0);
-  void* data = ::mmap(nullptr, 9, PROT_READ, MAP_SHARED, fd, 0);
-  ASSERT_NE(data, MAP_FAILED);
+  const Mapping mapped(file, PROT_READ);
+  ASSERT_NE(mapped.data, MAP_FAILED);
   const WatchedFiles watched = WatchedFiles::ofThisProcess();
-  std::ofstream(file) << "version 2";
+  std::ofstream(file) << "version 22";
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(5));
   EXPECT_EQ(watched.firstChanged(), std::nullopt);
-  ::munmap(data, 9);
-  ::close(fd);
+}
+
+TEST_F(WatchedFile, CodeMappedByTheProcessIsWatched) {
+  const Mapping mapped(file, PROT_READ | PROT_EXEC);
+  if (mapped.data == MAP_FAILED) GTEST_SKIP() << "the temporary folder is mounted noexec";
+  const WatchedFiles watched = WatchedFiles::ofThisProcess();
+  EXPECT_EQ(watched.firstChanged(), std::nullopt);
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(5));
+  EXPECT_EQ(watched.firstChanged(), file.string());
+}
+
+TEST_F(WatchedFile, CodeRemovedBeforeTheSnapshotIsAlreadyChanged) {
+  // A library reinstalled while the process was still starting: its code
+  // is loaded, and the file at its path is another.
+  const Mapping mapped(file, PROT_READ | PROT_EXEC);
+  if (mapped.data == MAP_FAILED) GTEST_SKIP() << "the temporary folder is mounted noexec";
+  const fs::path next = dir / "driver.so.new";
+  std::ofstream(next) << "version 1";
+  fs::rename(next, file);
+  const WatchedFiles watched = WatchedFiles::ofThisProcess();
+  EXPECT_EQ(watched.firstChanged(), file.string());
 }
 
 TEST_F(WatchedFile, AFileThatCannotBeReadIsAUsageError) {
