@@ -66,6 +66,10 @@ Only its own user's `snell eval --server` of the same build is answered.)");
     serveOptions.idleExit = std::chrono::seconds(options->idleExit);
     serveOptions.eval.threads = defaultEvalThreads();
     EvalServer server(*backend, options->backend, serveOptions, interrupt);
+    if (interrupt.signal()) {
+      fmt::print(stderr, "snell serve: stopped by signal {} while starting\n", interrupt.signal());
+      return 0;
+    }
     const DriverInfo& driver = backend->driverInfo();
     fmt::print(stderr, "snell serve: {} ({}) on {}, watching {} files; pid {}\n", options->backend,
                driver.renderer, serveOptions.socketPath, server.watchedFiles(), getpid());

@@ -62,14 +62,14 @@ WatchedFiles WatchedFiles::ofThisProcess(const std::vector<std::string>& extra) 
     watched.files_.push_back(std::move(*stamp));
   }
   for (const auto& [path, removed] : mappedFiles()) {
-    // Code whose file was removed or replaced (a library reinstalled)
-    // while the process was starting is out of date already.
+    // A name that is no file (an executable memfd, "/memfd:NAME (deleted)")
+    // has nothing on disk to change. Code whose file was replaced (a
+    // library reinstalled) while the process was starting is out of date
+    // already.
     std::optional<Stamp> stamp = stampOf(path);
-    if (removed || !stamp) {
-      watched.files_.push_back(Stamp{path, 0, 0, 0, {}, true});
-    } else {
-      watched.files_.push_back(std::move(*stamp));
-    }
+    if (!stamp) continue;
+    if (removed) stamp->changedAlready = true;
+    watched.files_.push_back(std::move(*stamp));
   }
   return watched;
 }

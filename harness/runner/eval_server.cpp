@@ -4,13 +4,11 @@
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
-#include <sys/time.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <csignal>
 #include <cstring>
-#include <ext/stdio_filebuf.h>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -18,7 +16,7 @@
 #include "core/errors.h"
 #include "runner/eval_server_protocol.h"
 #include "runner/interrupt_flag.h"
-#include "runner/socket_input.h"
+#include "runner/socket_streams.h"
 
 namespace snell {
 namespace {
@@ -32,7 +30,9 @@ constexpr std::size_t kMaxHeader = 4096;
 constexpr std::chrono::seconds kHeaderSeconds{10};
 constexpr std::chrono::seconds kInputStallSeconds{60};
 // A client that stops reading the answers is let go after this long.
-constexpr int kAnswerStallSeconds = 60;
+constexpr std::chrono::seconds kAnswerStallSeconds{60};
+// Once a request has ended, how long its last answers and trailer may take.
+constexpr std::chrono::seconds kFinishSeconds{2};
 
 std::string readHeaderLine(std::istream& in) {
   std::string line;
@@ -42,12 +42,6 @@ std::string readHeaderLine(std::istream& in) {
     line.push_back(static_cast<char>(c));
   }
   throw UsageError("no request header arrived (not a snell eval --server client?)");
-}
-
-bool sameUser(int fd) {
-  ucred peer{};
-  socklen_t size = sizeof(peer);
-  return getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) == 0 && peer.uid == getuid();
 }
 
 ino_t inodeOf(const std::string& path) {
@@ -93,6 +87,9 @@ EvalServer::EvalServer(Backend& backend, std::string backendName, ServeOptions o
   // before the socket exists: a --watch file that cannot be read stops
   // the server with nothing to clean up.
   watched_ = WatchedFiles::ofThisProcess(options_.watch);
+  // Stopped while the driver was starting: no socket, and run() returns
+  // at once.
+  if (interrupt_.signal()) return;
   listening_ = listenAt(options_.socketPath);
   socketInode_ = inodeOf(options_.socketPath);
 }
@@ -124,7 +121,13 @@ std::string EvalServer::run(std::FILE* log) {
     UniqueFd connection(::accept4(listening_.get(), nullptr, nullptr, SOCK_CLOEXEC));
     if (!connection) continue;  // the client gave up before it was taken
     std::string why;
-    const bool goOn = answer(connection.get(), log, why);
+    bool goOn = true;
+    try {
+      goOn = answer(connection.get(), log, why);
+    } catch (const std::exception& error) {
+      fmt::print(log, "snell serve: a request failed: {}\n", error.what());
+      std::fflush(log);
+    }
     lastRequest = Clock::now();
     if (!goOn) return why;
   }
@@ -140,13 +143,16 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     fmt::print(log, "snell serve: refused a request: {}\n", reply.error);
     std::fflush(log);
   };
-  if (!sameUser(fd)) {
+  ucred peer{};
+  socklen_t size = sizeof(peer);
+  if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0 || peer.uid != getuid()) {
     refuse(fmt::format("this server (pid {}) answers only its own user's snell eval", getpid()));
     return true;
   }
-  timeval answerLimit{kAnswerStallSeconds, 0};
-  setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &answerLimit, sizeof(answerLimit));
-  SocketInput input(fd, interrupt_.flag(), kHeaderSeconds);
+  fmt::print(log, "snell serve: a request from pid {}\n", peer.pid);
+  std::fflush(log);
+  SocketInput input(fd, interrupt_.flag(), kInputStallSeconds);
+  input.setDeadline(Clock::now() + kHeaderSeconds);
   std::istream in(&input);
   EvalRequest request;
   try {
@@ -155,6 +161,7 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     refuse(error.what());
     return true;
   }
+  input.setDeadline(std::nullopt);
   if (request.backend != backendName_) {
     refuse(
         fmt::format("this server (pid {}) runs {}, not {}; give --backend {}, or start "
@@ -179,56 +186,58 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
                     *changed, getpid(), backendName_));
     return false;
   }
+
   // The rest of the connection is the input, then room for the answers.
-  input.setStallLimit(kInputStallSeconds);
-  __gnu_cxx::stdio_filebuf<char> outBuffer(::dup(fd), std::ios::out, 1 << 16);
-  std::ostream out(&outBuffer);
+  SocketOutput output(fd, interrupt_.flag(), kAnswerStallSeconds);
+  std::ostream out(&output);
   try {
     reply.summary = evaluateLines(in, out, &backend_, rules_, options_.eval);
   } catch (const std::exception& error) {
     // Whatever one request does, the server stays up for the next.
     reply.error = error.what();
   }
-  bool goOn = true;
+  // What was answered, and why the rest was not, still reach a client
+  // that reads them, even after a signal.
+  output.finishWithin(kFinishSeconds);
+  out.flush();
+  const std::string partial = "the answers above are of the lines it had read, not of all";
+  bool stopped = input.end() == SocketEnd::Stopped || output.end() == SocketEnd::Stopped;
   if (reply.error.empty()) {
-    switch (input.end()) {
-      case SocketInput::End::Stopped:
-        reply.error = fmt::format(
-            "this server (pid {}) was stopped (signal {}) during the request: the answers above "
-            "are of the lines it had read, not of all",
-            getpid(), interrupt_.signal());
-        reply.serverStopped = true;
-        why = fmt::format("stopped by signal {}", interrupt_.signal());
-        goOn = false;
-        break;
-      case SocketInput::End::Stalled:
-        reply.error = fmt::format(
-            "the input sent nothing for {} s and the server ended the request: the answers above "
-            "are of the lines it had read, not of all",
-            kInputStallSeconds.count());
-        break;
-      case SocketInput::End::Failed:
-        reply.error =
-            "reading the request failed: the answers above are of the lines read before, not of "
-            "all";
-        break;
-      default:
-        break;
+    if (stopped) {
+      reply.error =
+          fmt::format("this server (pid {}) was stopped (signal {}) during the request: {}",
+                      getpid(), interrupt_.signal(), partial);
+    } else if (input.end() == SocketEnd::Stalled) {
+      reply.error =
+          fmt::format("the input sent nothing for {} s and the server ended the request: {}",
+                      kInputStallSeconds.count(), partial);
+    } else if (input.end() == SocketEnd::Failed) {
+      reply.error = fmt::format("reading the request failed: {}", partial);
     }
   }
-  out.flush();
-  const std::string trailer = replyTrailerLine(reply);
-  const bool delivered = out.good() && writeAll(fd, trailer.c_str(), trailer.size());
+  reply.serverStopped = stopped;
+  if (output.end() == SocketEnd::NotYet) {
+    const std::string trailer = replyTrailerLine(reply);
+    out.write(trailer.data(), static_cast<std::streamsize>(trailer.size()));
+    out.flush();
+  }
+  stopped = stopped || output.end() == SocketEnd::Stopped;
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
+  const char* lost = output.end() == SocketEnd::NotYet    ? ""
+                     : output.end() == SocketEnd::Stalled ? "; the client read nothing for a while "
+                                                            "and was let go before the end"
+                                                          : "; the client left before the end";
   if (!reply.error.empty())
-    fmt::print(log, "snell serve: a request failed after {:.3f} s: {}\n", seconds, reply.error);
+    fmt::print(log, "snell serve: a request failed after {:.3f} s: {}{}\n", seconds, reply.error,
+               lost);
   else
     fmt::print(
         log, "snell serve: {} line{} answered ({} outside the spec, {} malformed) in {:.3f} s{}\n",
         reply.summary.answered, reply.summary.answered == 1 ? "" : "s", reply.summary.outsideSpec,
-        reply.summary.malformed, seconds, delivered ? "" : "; the client left before the end");
+        reply.summary.malformed, seconds, lost);
   std::fflush(log);
-  return goOn;
+  if (stopped) why = fmt::format("stopped by signal {}", interrupt_.signal());
+  return !stopped;
 }
 
 }  // namespace snell

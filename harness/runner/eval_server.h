@@ -33,8 +33,9 @@ struct ServeOptions {
 class EvalServer {
  public:
   // Answers one call of each probe program (so that no request pays for
-  // their compiles), listens at options.socketPath (see listenAt) and takes
-  // the snapshot of the loaded code: `backend` must already be up.
+  // their compiles), takes the snapshot of the loaded code and listens at
+  // options.socketPath (see listenAt), unless `interrupt` has already
+  // seen a signal: `backend` must already be up.
   // `interrupt` is installed by the caller before the driver starts, so
   // that SIGINT/SIGTERM at any point stop the server through its
   // destructor (which removes the socket).

@@ -26,9 +26,12 @@ std::string requestHeaderLine(const EvalRequest& request) {
 
 EvalRequest parseRequestHeader(std::string_view line) {
   const json header = json::parse(line.begin(), line.end(), nullptr, false);
-  if (!header.is_object() || header.value("snell_eval", 0) != kProtocol ||
-      !header.contains("backend") || !header["backend"].is_string() || !header.contains("build") ||
-      !header["build"].is_string())
+  const auto has = [&](const char* key, bool (json::*is)() const noexcept) {
+    return header.contains(key) && (header[key].*is)();
+  };
+  if (!header.is_object() || !has("snell_eval", &json::is_number_integer) ||
+      header["snell_eval"] != kProtocol || !has("backend", &json::is_string) ||
+      !has("build", &json::is_string))
     throw UsageError("not a snell eval request (protocol 1)");
   return {header["backend"].get<std::string>(), header["build"].get<std::string>()};
 }

@@ -86,6 +86,15 @@ bool listening(const fs::path& log) {
   return false;
 }
 
+// Waits until the log holds `text`.
+bool logged(const fs::path& log, const std::string& text) {
+  for (int k = 0; k < 600; ++k) {
+    if (readText(log).find(text) != std::string::npos) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return false;
+}
+
 const char* kLines =
     "{\"fn\":\"refract\",\"I\":[0.6,-0.8,0],\"N\":[0,1,0],\"eta\":0.66}\n"
     "{\"fn\":\"reflect\",\"I\":[0.6,-0.8],\"N\":[0,1]}\n"
@@ -220,13 +229,13 @@ TEST(EvalServerCli, SigtermDuringARequestStopsTheServerAndFailsTheRequest) {
   const fs::path input = scratch.file("in.jsonl", kLines);
   Server server({"--backend", "gl", "--socket", socket.string()}, log);
   ASSERT_TRUE(listening(log)) << readText(log);
-  // A client whose input stays open for 8 s after its lines.
+  // A client whose input stays open for 6 s after its lines.
   Outcome client;
   std::thread asking([&] {
     client = runSnell(fmt::format("eval --backend gl --server --socket {}", socket.string()),
-                      fmt::format("(cat {}; sleep 8) |", input.string()));
+                      fmt::format("(cat {}; sleep 6) |", input.string()));
   });
-  std::this_thread::sleep_for(std::chrono::seconds(2));
+  ASSERT_TRUE(logged(log, "a request from pid")) << readText(log);
   ::kill(server.pid(), SIGTERM);
   EXPECT_EQ(server.exitWithin(std::chrono::seconds(4)), std::optional<int>(0)) << readText(log);
   asking.join();
@@ -234,6 +243,25 @@ TEST(EvalServerCli, SigtermDuringARequestStopsTheServerAndFailsTheRequest) {
   EXPECT_NE(client.out.find("was stopped (signal 15) during the request"), std::string::npos)
       << client.out;
   EXPECT_FALSE(fs::exists(socket));
+}
+
+TEST(EvalServerCli, SigtermWhileAClientReadsNoAnswersStopsTheServer) {
+  const Scratch scratch("unread");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  std::string many;
+  for (int k = 0; k < 7000; ++k) many += kLines;  // answers far past the socket's and pipe's room
+  const fs::path input = scratch.file("in.jsonl", many);
+  Server server({"--backend", "gl", "--socket", socket.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  std::thread asking([&] {
+    runSnell(fmt::format("eval --backend gl --server --socket {} {} | sleep 6", socket.string(),
+                         input.string()));
+  });
+  ASSERT_TRUE(logged(log, "a request from pid")) << readText(log);
+  std::this_thread::sleep_for(std::chrono::seconds(1));  // the answers fill the pipe
+  ::kill(server.pid(), SIGTERM);
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(4)), std::optional<int>(0)) << readText(log);
+  asking.join();
 }
 
 TEST(EvalServerCli, StopsWhenItsSocketIsRemoved) {

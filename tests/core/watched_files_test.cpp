@@ -103,6 +103,23 @@ TEST_F(WatchedFile, CodeRemovedBeforeTheSnapshotIsAlreadyChanged) {
   EXPECT_EQ(watched.firstChanged(), file.string());
 }
 
+TEST_F(WatchedFile, ExecutableMemoryWithNoFileIsNotWatched) {
+  // As a JIT may map its code ("/memfd:NAME (deleted)" in the maps): no
+  // file on disk, so nothing that can be rebuilt.
+  const int fd = ::memfd_create("snell-watched-test", MFD_CLOEXEC);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::ftruncate(fd, 4096), 0);
+  void* code = ::mmap(nullptr, 4096, PROT_READ | PROT_EXEC, MAP_PRIVATE, fd, 0);
+  if (code == MAP_FAILED) {
+    ::close(fd);
+    GTEST_SKIP() << "executable memfd mappings are not allowed here";
+  }
+  const WatchedFiles watched = WatchedFiles::ofThisProcess();
+  EXPECT_EQ(watched.firstChanged(), std::nullopt);
+  ::munmap(code, 4096);
+  ::close(fd);
+}
+
 TEST_F(WatchedFile, AFileThatCannotBeReadIsAUsageError) {
   EXPECT_THROW(WatchedFiles::ofThisProcess({(dir / "missing").string()}), snell::UsageError);
 }

@@ -21,7 +21,8 @@ TEST(EvalServerProtocol, RequestHeaderRoundTrips) {
 TEST(EvalServerProtocol, AHeaderThatIsNotOursIsRefused) {
   for (const char* text :
        {"", "{\"fn\":\"refract\"}", "{\"snell_eval\":2,\"backend\":\"gl\",\"build\":\"\"}",
-        "{\"snell_eval\":1,\"backend\":3,\"build\":\"\"}", "not json"})
+        "{\"snell_eval\":1,\"backend\":3,\"build\":\"\"}", "not json",
+        "{\"snell_eval\":\"1\",\"backend\":\"gl\",\"build\":\"\"}", "[1]"})
     EXPECT_THROW(parseRequestHeader(text), UsageError) << text;
 }
 
