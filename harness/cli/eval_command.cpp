@@ -2,7 +2,6 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
-#include <charconv>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -13,30 +12,15 @@
 #include "backends/backend.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "cli/eval_setup.h"
 #include "core/errors.h"
-#include "runner/block_pool.h"
 #include "runner/builtin_eval.h"
 #include "runner/eval_client.h"
 #include "runner/eval_server_protocol.h"
-#include "runner/oracle_store/oracle_store.h"
 #include "runner/unix_socket.h"
 
 namespace snell::cli {
 namespace {
-
-// A whole number of at least 1 from the environment (a tuning knob for
-// tests and benchmarks), or `fallback` when it is not set.
-std::size_t positiveFromEnvironment(const char* name, std::size_t fallback) {
-  const char* text = std::getenv(name);
-  if (!text || !*text) return fallback;
-  const std::string_view view(text);
-  std::size_t value = 0;
-  const auto [end, error] = std::from_chars(view.data(), view.data() + view.size(), value);
-  if (error != std::errc() || end != view.data() + view.size() || value == 0)
-    throw UsageError(
-        fmt::format("{}={}: give a whole number of at least 1, or unset it", name, view));
-  return value;
-}
 
 // On a terminal only (never in CI logs): one line on stderr, rewritten
 // every second or so once a run has taken two seconds.
@@ -197,18 +181,10 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     PrecisionRules rules =
         options->rules == "vulkan" ? PrecisionRules::Vulkan : PrecisionRules::Glsl;
     if (options->backend != "oracle") {
-      BackendOptions backendOptions;
-      backendOptions.device = options->device;
-      backendOptions.glProvider = options->glProvider;
-      // Compiled programs are kept where a run keeps its oracle results.
-      backendOptions.cacheDir = defaultOracleStoreDir().string();
-      backend = makeBackend(options->backend, backendOptions);
+      backend = makeEvalBackend(options->backend, options->device, options->glProvider);
       rules = precisionRulesForApi(backend->driverInfo().api);
     }
-    EvalOptions evalOptions;
-    evalOptions.chunkLines = positiveFromEnvironment("SNELL_EVAL_CHUNK", evalOptions.chunkLines);
-    evalOptions.threads =
-        static_cast<unsigned>(positiveFromEnvironment("SNELL_EVAL_THREADS", defaultEvalThreads()));
+    EvalOptions evalOptions = evalOptionsFromEnvironment();
     TerminalProgress progress;
     evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);

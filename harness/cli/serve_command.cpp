@@ -4,12 +4,11 @@
 #include "backends/backend.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "cli/eval_setup.h"
 #include "core/errors.h"
-#include "runner/block_pool.h"
 #include "runner/eval_server.h"
 #include "runner/eval_server_protocol.h"
 #include "runner/interrupt_flag.h"
-#include "runner/oracle_store/oracle_store.h"
 
 namespace snell::cli {
 
@@ -54,17 +53,14 @@ Only its own user's `snell eval --server` of the same build is answered.)");
     // First: a signal from here on stops the server cleanly (no socket
     // file left behind), whatever it is doing.
     const InterruptFlag interrupt;
-    BackendOptions backendOptions;
-    backendOptions.device = options->device;
-    backendOptions.glProvider = options->glProvider;
-    backendOptions.cacheDir = defaultOracleStoreDir().string();
-    std::unique_ptr<Backend> backend = makeBackend(options->backend, backendOptions);
+    std::unique_ptr<Backend> backend =
+        makeEvalBackend(options->backend, options->device, options->glProvider);
     ServeOptions serveOptions;
     serveOptions.socketPath =
         options->socket.empty() ? defaultServeSocket(options->backend) : options->socket;
     serveOptions.watch = options->watch;
     serveOptions.idleExit = std::chrono::seconds(options->idleExit);
-    serveOptions.eval.threads = defaultEvalThreads();
+    serveOptions.eval = evalOptionsFromEnvironment();
     EvalServer server(*backend, options->backend, serveOptions, interrupt);
     if (interrupt.signal()) {
       fmt::print(stderr, "snell serve: stopped by signal {} while starting\n", interrupt.signal());

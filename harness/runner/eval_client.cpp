@@ -22,9 +22,7 @@ namespace {
 // The server must be this user's own: another user's socket at the same
 // path could answer anything.
 void requireOwnServer(int fd, const std::string& socketPath) {
-  ucred peer{};
-  socklen_t size = sizeof(peer);
-  if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0 || peer.uid != getuid())
+  if (!peerIsThisUser(fd))
     throw UsageError(fmt::format(
         "{}: the server here runs as another user; start your own with --socket elsewhere",
         socketPath));

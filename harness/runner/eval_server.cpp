@@ -143,13 +143,12 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     fmt::print(log, "snell serve: refused a request: {}\n", reply.error);
     std::fflush(log);
   };
-  ucred peer{};
-  socklen_t size = sizeof(peer);
-  if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0 || peer.uid != getuid()) {
+  int client = 0;
+  if (!peerIsThisUser(fd, &client)) {
     refuse(fmt::format("this server (pid {}) answers only its own user's snell eval", getpid()));
     return true;
   }
-  fmt::print(log, "snell serve: a request from pid {}\n", peer.pid);
+  fmt::print(log, "snell serve: a request from pid {}\n", client);
   std::fflush(log);
   SocketInput input(fd, interrupt_.flag(), kInputStallSeconds);
   input.setDeadline(Clock::now() + kHeaderSeconds);

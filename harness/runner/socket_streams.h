@@ -17,11 +17,10 @@ enum class SocketEnd { NotYet, Closed, Stopped, Stalled, Failed };
 
 class SocketInput : public std::streambuf {
  public:
-  // `stop` is the flag a signal handler sets (InterruptFlag::flag()).
+  // `stop` is the flag a signal handler sets (InterruptFlag::flag());
+  // the input ends as Stalled when the client sends nothing for `stallLimit`.
   SocketInput(int fd, const volatile std::sig_atomic_t* stop, std::chrono::seconds stallLimit);
 
-  // How long the client may send nothing before the input ends as Stalled.
-  void setStallLimit(std::chrono::seconds limit) { stallLimit_ = limit; }
   // A time by which the input must have arrived, however it trickles in
   // (the request header); nothing clears it.
   void setDeadline(std::optional<std::chrono::steady_clock::time_point> deadline) {

@@ -91,6 +91,14 @@ UniqueFd connectTo(const std::string& path) {
   return fd;
 }
 
+bool peerIsThisUser(int fd, int* pid) {
+  ucred peer{};
+  socklen_t size = sizeof(peer);
+  if (getsockopt(fd, SOL_SOCKET, SO_PEERCRED, &peer, &size) != 0) return false;
+  if (pid) *pid = peer.pid;
+  return peer.uid == getuid();
+}
+
 bool writeAll(int fd, const char* data, std::size_t size) {
   while (size > 0) {
     const ssize_t n = ::send(fd, data, size, MSG_NOSIGNAL);

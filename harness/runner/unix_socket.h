@@ -34,6 +34,10 @@ UniqueFd listenAt(const std::string& path);
 // A connection to the server at `path`, or an empty fd with errno set.
 UniqueFd connectTo(const std::string& path);
 
+// Whether the process at the other end of a connected socket runs as this
+// process's user (SO_PEERCRED); its pid goes to `pid` when given.
+bool peerIsThisUser(int fd, int* pid = nullptr);
+
 // Writes all of `size` bytes; false when the peer is gone (no SIGPIPE).
 bool writeAll(int fd, const char* data, std::size_t size);
 
