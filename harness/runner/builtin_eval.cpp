@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -13,12 +12,12 @@
 #include "core/errors.h"
 #include "oracle/builtin_probe.h"
 #include "runner/block_pool.h"
+#include "runner/builtin_draw.h"
 #include "runner/eval_answer_text.h"
 #include "runner/eval_line.h"
 #include "runner/eval_line_fast.h"
 #include "runner/line_chunks.h"
 #include "runner/physics_eval_line.h"
-#include "runner/probe_shader.h"
 
 namespace snell {
 namespace {
@@ -116,36 +115,13 @@ void answerLine(const Line& line, const BuiltinResult* oracle, bool onDriver, Pr
   if (appendEvalAnswer(block.text, answer)) ++summary.outsideSpec;
 }
 
-// One draw for all lines of the chunk that share a function and a width.
+// The lines with a call, drawn on the driver (runner/builtin_draw.h).
 void runOnDriver(std::vector<Line>& lines, Backend& backend) {
-  std::map<std::pair<std::string, int>, std::vector<Line*>> groups;
+  std::vector<DrawnCall> calls;
+  calls.reserve(lines.size());
   for (Line& line : lines)
-    if (line.call) groups[{line.call->fn, static_cast<int>(line.call->I.size())}].push_back(&line);
-  for (auto& [key, members] : groups) {
-    const auto& [fn, width] = key;
-    CaptureJob job;
-    job.program = builtinProbeProgram(fn, width);
-    job.varyings = {"R"};
-    job.vertexCount = members.size();
-    AttributeStream I{"I", width, {}}, N{"N", width, {}}, eta{"eta", 1, {}};
-    I.data.reserve(members.size() * static_cast<std::size_t>(width));
-    N.data.reserve(members.size() * static_cast<std::size_t>(width));
-    eta.data.reserve(members.size());
-    for (const Line* line : members) {
-      I.data.insert(I.data.end(), line->call->I.begin(), line->call->I.end());
-      N.data.insert(N.data.end(), line->call->N.begin(), line->call->N.end());
-      eta.data.push_back(line->call->eta);
-    }
-    job.attributes = {{"I", std::move(I)}, {"N", std::move(N)}};
-    if (fn == "refract") job.attributes["eta"] = std::move(eta);
-    const CaptureOutcome outcome = backend.captureVertexOutputs(job);
-    if (!outcome.compile.ok)
-      throw SetupError(fmt::format("the {} probe shader did not compile on {}: {}", fn,
-                                   backend.name(), outcome.compile.log));
-    const std::vector<float>& values = outcome.varyings.at(0).data;
-    for (std::size_t k = 0; k < members.size(); ++k)
-      members[k]->driver.assign(values.begin() + k * width, values.begin() + (k + 1) * width);
-  }
+    if (line.call) calls.push_back({&*line.call, &line.driver});
+  drawBuiltinCalls(calls, backend);
 }
 
 void addBlock(EvalSummary& total, const EvalSummary& block) {

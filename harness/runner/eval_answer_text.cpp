@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <string_view>
 
-#include "compare/slack.h"
+#include "runner/builtin_draw.h"
 
 namespace snell {
 namespace {
@@ -81,16 +81,9 @@ bool appendEvalAnswer(fmt::memory_buffer& out, const EvalAnswer& answer) {
     }
     text(out, "],");
   }
-  bool outside = false;
-  double worst = 0;
+  DriverJudgement judgement;
   if (answer.driver) {
-    const std::vector<float>& driver = *answer.driver;
-    // Judged as a whole vector against the way it fits (or comes nearest).
-    outside = !oracle.allows(driver);
-    const BuiltinWay& nearest = oracle.nearestWay(driver);
-    for (std::size_t c = 0; c < driver.size(); ++c)
-      if (!nearest.undefined[c])
-        worst = std::max(worst, slack(driver[c], nearest.value[c], nearest.lo[c], nearest.hi[c]));
+    judgement = judgeDriverVector(oracle, *answer.driver);
     text(out, "\"exact\":");
     numbers(out, oracle.value);
     out.push_back(',');
@@ -106,8 +99,8 @@ bool appendEvalAnswer(fmt::memory_buffer& out, const EvalAnswer& answer) {
   out.push_back('"');
   if (answer.driver) {
     text(out, ",\"slack\":");
-    if (std::isfinite(worst))
-      number(out, worst);
+    if (std::isfinite(judgement.worstSlack))
+      number(out, judgement.worstSlack);
     else
       text(out, "\"inf\"");
   }
@@ -120,9 +113,10 @@ bool appendEvalAnswer(fmt::memory_buffer& out, const EvalAnswer& answer) {
     numbers(out, *answer.driver);
   else
     numbers(out, oracle.value);
-  if (answer.driver) text(out, outside ? ",\"within_spec\":false" : ",\"within_spec\":true");
+  if (answer.driver)
+    text(out, judgement.outside ? ",\"within_spec\":false" : ",\"within_spec\":true");
   text(out, "}\n");
-  return outside;
+  return judgement.outside;
 }
 
 }  // namespace snell
