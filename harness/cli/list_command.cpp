@@ -31,7 +31,7 @@ Command addListCommand(CLI::App& app) {
       "--check", options->check,
       "Also check every case as `run` does before it starts (scenes, captures, oracles)");
   return [options] {
-    const std::vector<Manifest> manifests = loadManifests(options->shaders);
+    const std::vector<Manifest> manifests = loadCatalog(options->shaders);
     const std::vector<Case> cases = expandCases(manifests, options->filter);
     if (options->check) validateCases(cases, options->shaders);
     std::size_t width = 4;

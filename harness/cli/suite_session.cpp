@@ -142,7 +142,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (compareGoldens && !fs::is_directory(options.golden))
     throw UsageError(fmt::format("{}: no such golden folder; pass --golden DIR", options.golden));
   SuiteRun run;
-  run.manifests = loadManifests(options.shaders);
+  run.manifests = loadCatalog(options.shaders);
   for (Case& c : expandCases(run.manifests, options.filter))
     if (!onlyImageCases || c.spec.has("image")) run.cases.push_back(std::move(c));
   if (run.cases.empty())

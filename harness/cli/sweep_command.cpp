@@ -67,7 +67,7 @@ Command addSweepCommand(CLI::App& app) {
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
   sweep->add_flag("--no-charts", options->noCharts, "Skip the gnuplot charts");
   sweep->add_option("--timeout", options->timeout, "Seconds each driver may take")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
   sweep->footer(
       "Each break is implementation (a backend left its spec interval, or crashed), undefined\n"
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"

@@ -486,6 +486,16 @@ std::vector<Manifest> loadManifests(const fs::path& dir) {
   return manifests;
 }
 
+std::vector<Manifest> loadCatalog(const fs::path& dir) {
+  std::vector<Manifest> manifests = loadManifests(dir);
+  if (manifests.empty())
+    throw UsageError(fmt::format(
+        "{}: no listings here (no manifest.toml below it); pass --shaders a folder of listings, "
+        "or start one with `snell init DIR`",
+        dir.string()));
+  return manifests;
+}
+
 ProgramSource loadProgram(const Manifest& manifest) {
   const fs::path dir = manifest.path.parent_path();
   ProgramSource program;

@@ -112,6 +112,10 @@ Manifest loadManifest(const std::filesystem::path& path);
 
 // Every manifest.toml below `dir`, sorted by id; duplicate ids are an error.
 std::vector<Manifest> loadManifests(const std::filesystem::path& dir);
+// The same for a command that runs or lists the catalog: a folder with no
+// manifest.toml below it is a UsageError (a mistyped --shaders), not a run
+// of nothing.
+std::vector<Manifest> loadCatalog(const std::filesystem::path& dir);
 
 // The stage files as published; a missing file is a UsageError.
 ProgramSource loadProgram(const Manifest& manifest);

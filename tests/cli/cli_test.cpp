@@ -58,6 +58,20 @@ TEST(Cli, NoSubcommandIsExit2) { EXPECT_EQ(snell("").code, 2); }
 TEST(Cli, BadBackendIsExit2) { EXPECT_EQ(snell("run --backend d3d").code, 2); }
 TEST(Cli, MissingShadersFolderIsExit2) { EXPECT_EQ(snell("run --shaders /nonexistent").code, 2); }
 
+TEST(Cli, AFolderWithNoListingsIsExit2SayingSo) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-empty-{}", ::getpid());
+  fs::create_directories(dir / "not-a-listing");
+  std::ofstream(dir / "not-a-listing" / "shader.vert") << "void main() {}\n";
+  for (const char* command : {"list", "run", "bless"}) {
+    const Outcome o = snell(fmt::format("{} --shaders {}", command, dir.string()));
+    EXPECT_EQ(o.code, 2) << command << ": " << o.out;
+    EXPECT_NE(o.out.find(dir.string() + ": no listings here (no manifest.toml below it)"),
+              std::string::npos)
+        << command << ": " << o.out;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
   const Outcome o = snell("run --filter 'no-such/*'");
   EXPECT_EQ(o.code, 2);

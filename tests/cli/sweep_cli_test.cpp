@@ -133,6 +133,18 @@ TEST(SweepCli, DeviceReachesTheDrivers) {
   EXPECT_NE(o.out.find("--device 99"), std::string::npos) << o.out;
 }
 
+TEST(SweepCli, ATimeoutOutOfRangeSaysTheRange) {
+  for (const char* timeout : {"-1", "0", "1e9"}) {
+    const Outcome o = runSnell(
+        fmt::format("sweep --quick --no-charts --timeout {} --out /tmp/snell-sweep-t", timeout));
+    EXPECT_EQ(o.code, 2) << o.out;
+    EXPECT_NE(o.out.find("--timeout: Value " + std::string(timeout) +
+                         " not in range 0.001000 to 86400.000000"),
+              std::string::npos)
+        << o.out;
+  }
+}
+
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
   const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
   EXPECT_EQ(o.code, 2) << o.out;
