@@ -6,6 +6,7 @@
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "core/errors.h"
+#include "core/manifest.h"
 #include "runner/backend_probe.h"
 #include "runner/builtin_eval.h"
 #include "sweep/listing_capture.h"
@@ -83,6 +84,9 @@ Command addSweepCommand(CLI::App& app) {
       return sweep::runListingWorker(options->listingWorker, options->listingStart,
                                      options->backend, backendOptions);
     }
+    // A --shaders folder with no listings is refused before the built-ins'
+    // sweep, not found empty after it.
+    if (!options->listings.empty()) loadCatalog(options->shaders);
     const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
     std::vector<std::string> driverArgs;

@@ -62,7 +62,7 @@ TEST(Cli, AFolderWithNoListingsIsExit2SayingSo) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-empty-{}", ::getpid());
   fs::create_directories(dir / "not-a-listing");
   std::ofstream(dir / "not-a-listing" / "shader.vert") << "void main() {}\n";
-  for (const char* command : {"list", "run", "bless"}) {
+  for (const char* command : {"list", "run", "bless", "sweep"}) {
     const Outcome o = snell(fmt::format("{} --shaders {}", command, dir.string()));
     EXPECT_EQ(o.code, 2) << command << ": " << o.out;
     EXPECT_NE(o.out.find(dir.string() + ": no listings here (no manifest.toml below it)"),
