@@ -34,25 +34,32 @@ std::string describeBackends() {
   return text;
 }
 
+std::string backendListReason(const std::string& list, bool allowAll) {
+  if (allowAll && list == "all") return "";
+  const std::vector<std::string> names = splitBackendList(list);
+  if (names.empty())
+    return allowAll ? "name at least one backend, or all" : "name at least one backend";
+  for (const std::string& name : names)
+    if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
+  return "";
+}
+
+void addDriverOptions(CLI::App& sub, std::string& device, std::string& glProvider) {
+  sub.add_option("--device", device,
+                 "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
+                 "device backends (gl:gpu): a device index");
+  sub.add_option("--gl-provider", glProvider,
+                 "OpenGL context provider in place of the backend's own: osmesa or egl")
+      ->check(CLI::IsMember({"osmesa", "egl"}));
+}
+
 void addBackendOptions(CLI::App& sub, std::string& backend, std::string& device,
                        std::string& glProvider) {
   sub.add_option("--backend", backend,
                  "Backends to run: names joined by commas, or all (every one that comes up "
                  "here; `snell devices`)")
-      ->check([](const std::string& value) -> std::string {
-        if (value == "all") return "";
-        const std::vector<std::string> names = splitBackendList(value);
-        if (names.empty()) return "name at least one backend, or all";
-        for (const std::string& name : names)
-          if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
-        return "";
-      });
-  sub.add_option("--device", device,
-                 "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
-                 "device backends (gl:gpu): a device index");
-  sub.add_option("--gl-provider", glProvider,
-                 "OpenGL context provider in place of each backend's own: osmesa or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+      ->check([](const std::string& value) { return backendListReason(value, true); });
+  addDriverOptions(sub, device, glProvider);
 }
 
 }  // namespace snell::cli

@@ -132,12 +132,7 @@ Command addEvalCommand(CLI::App& app) {
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
                    "is judged by its own API's")
       ->check(CLI::IsMember({"glsl", "vulkan"}));
-  eval->add_option("--device", options->device,
-                   "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
-                   "device backends (gl:gpu): a device index");
-  eval->add_option("--gl-provider", options->glProvider,
-                   "OpenGL context provider in place of the backend's own: osmesa or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+  addDriverOptions(*eval, options->device, options->glProvider);
   eval->add_flag("--server", options->server,
                  "Ask the `snell serve --backend BACKEND` of this user instead of starting the "
                  "driver here");

@@ -29,9 +29,7 @@ Command addServeCommand(CLI::App& app) {
   serve->add_option("--backend", options->backend, "The backend to serve (`snell devices`)")
       ->required()
       ->check(unknownBackendReason);
-  serve->add_option("--device", options->device, "As `eval --device`");
-  serve->add_option("--gl-provider", options->glProvider, "As `eval --gl-provider`")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+  addDriverOptions(*serve, options->device, options->glProvider);
   serve->add_option("--socket", options->socket,
                     "Unix socket to listen at (default $XDG_RUNTIME_DIR/snell-serve-BACKEND.sock, "
                     "else /tmp/snell-serve-UID-BACKEND.sock)");

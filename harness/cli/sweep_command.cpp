@@ -42,19 +42,8 @@ Command addSweepCommand(CLI::App& app) {
       ->add_option("--backend", options->backend,
                    "Drivers to sweep, joined by commas (`snell devices`); the oracle is always "
                    "swept")
-      ->check([](const std::string& value) -> std::string {
-        if (splitBackendList(value).empty()) return "name at least one backend";
-        for (const std::string& name : splitBackendList(value))
-          if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
-        return "";
-      });
-  sweep->add_option("--device", options->device,
-                    "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
-                    "device backends (gl:gpu): a device index");
-  sweep
-      ->add_option("--gl-provider", options->glProvider,
-                   "OpenGL context provider in place of each backend's own: osmesa or egl")
-      ->check(CLI::IsMember({"osmesa", "egl"}));
+      ->check([](const std::string& value) { return backendListReason(value, false); });
+  addDriverOptions(*sweep, options->device, options->glProvider);
   sweep->add_option("--listings", options->listings,
                     "Catalog listings to sweep (glob over ids, `snell list`); empty: none");
   sweep->add_option("--shaders", options->shaders, "The catalog's folder");
