@@ -2,12 +2,33 @@
 // (core/manifest_draft.h), for the author to finish and run.
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+
 #include "cli/commands.h"
 #include "core/errors.h"
+#include "core/manifest.h"
 #include "core/manifest_draft.h"
+#include "core/whole_file.h"
 #include "derived/lower_glsl.h"
 
 namespace snell::cli {
+namespace {
+
+// `text` as one word of a shell command: quoted when it holds anything but
+// letters, digits and / . _ - + : @ %.
+std::string shellWord(const std::string& text) {
+  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("/._-+:@%", c);
+  });
+  if (plain) return text;
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+}  // namespace
 
 Command addInitCommand(CLI::App& app) {
   CLI::App* init = app.add_subcommand(
@@ -21,11 +42,13 @@ Command addInitCommand(CLI::App& app) {
   init->add_option("dir", options->dir, "Folder holding the listing's .vert and .frag files")
       ->required();
   init->add_option("--vertex", options->request.vertexFile,
-                   "The vertex stage file in DIR (default: the one *.vert)");
+                   "The vertex stage file, relative to DIR (default: the one *.vert in DIR)");
   init->add_option("--fragment", options->request.fragmentFile,
-                   "The fragment stage file in DIR (default: the one *.frag, if any)");
+                   "The fragment stage file, relative to DIR (default: the one *.frag in DIR, "
+                   "if any)");
   init->add_option("--id", options->request.id,
-                   "The listing's id (default: DIR's parent and name, \"parent/name\")");
+                   "The listing's id (default: DIR's parent and name, \"parent/name\")")
+      ->check(CLI::Validator([](const std::string& id) { return listingIdProblem(id); }, "ID"));
   init->add_flag("--force", options->force, "Replace an existing DIR/manifest.toml");
   return [options] {
     options->request.dir = options->dir;
@@ -44,8 +67,18 @@ Command addInitCommand(CLI::App& app) {
       }
     };
     const std::filesystem::path path = writeDraftManifest(options->request, options->force);
-    fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
-               path.string(), options->dir);
+    const std::string dir = shellWord(options->dir);
+    // An image case of a new listing fails on its missing golden wherever
+    // the driver has goldens for other listings: blessing comes first.
+    if (readWholeFile(path).value_or("").find("\"image\"]") != std::string::npos)
+      fmt::print(
+          "wrote {}: fill in the lines marked FILL IN, then `snell bless --shaders {}` to write "
+          "the image cases' goldens (only images that match the CPU reference are blessed), and "
+          "`snell run --shaders {}`\n",
+          path.string(), dir, dir);
+    else
+      fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
+                 path.string(), dir);
     return 0;
   };
 }

@@ -4,8 +4,11 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -16,6 +19,15 @@ namespace snell {
 namespace {
 
 namespace fs = std::filesystem;
+
+// A line number (capture, compile_error) past int's range is no file's line;
+// kept as a number, it would be cut to 32 bits and name another line.
+constexpr std::int64_t kMaxLine = std::numeric_limits<int>::max();
+
+bool idCharacter(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_' ||
+         c == '+';
+}
 
 class ManifestReader {
  public:
@@ -228,7 +240,8 @@ class ManifestReader {
                          "(the fourth channel marks the pixels that wrote it)",
                          capture.name, type));
       const toml::node* line = table.get("line");
-      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
+      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1 ||
+          *line->value<std::int64_t>() > kMaxLine)
         fail(capture.manifestLine,
              fmt::format("capture `{}`: `line` must be the fragment file's line (from 1) whose "
                          "statement computes it",
@@ -277,7 +290,8 @@ class ManifestReader {
                                          "\"fragment\"",
                                          api.str()));
       const toml::node* line = entry->get("line");
-      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1)
+      if (!line || !line->is_integer() || *line->value<std::int64_t>() < 1 ||
+          *line->value<std::int64_t>() > kMaxLine)
         fail(d.manifestLine, fmt::format("`compile_error.{}.line` must be the line (from 1) the "
                                          "diagnostic points at",
                                          api.str()));
@@ -305,11 +319,16 @@ class ManifestReader {
     auto number = [&](std::string_view key) {
       const toml::node* value = table.get(key);
       if (!value) fail(lineOf(*node), fmt::format("`image` is missing `{}`", key));
-      if (!numeric(*value) || *value->value<double>() < 0)
-        fail(lineOf(*value), fmt::format("`image.{}` must be a number >= 0", key));
+      // nan and inf are numbers to TOML; a threshold must be a finite one.
+      if (!numeric(*value) || !(*value->value<double>() >= 0) ||
+          !std::isfinite(*value->value<double>()))
+        fail(lineOf(*value), fmt::format("`image.{}` must be a finite number >= 0", key));
       return *value->value<double>();
     };
     ImageTolerance t{number("fail"), number("warn"), number("failpercent"), number("hardfail")};
+    if (t.failPercent > 100)
+      fail(lineOf(*table.get("failpercent")),
+           "`image.failpercent` is a percentage of the pixels: at most 100");
     if (t.warn > t.fail) fail(lineOf(*node), "`image.warn` must not exceed `image.fail`");
     if (t.hardFail < t.fail) fail(lineOf(*node), "`image.hardfail` must not be below `image.fail`");
     return t;
@@ -331,6 +350,8 @@ class ManifestReader {
     Manifest m;
     m.path = path_;
     m.id = requiredString(root, "id", 1);
+    if (const std::string problem = listingIdProblem(m.id); !problem.empty())
+      fail(lineOf(*root.get("id")), problem);
     m.title = requiredString(root, "title", 1);
     const toml::table& source = requiredTable(root, "source", 1);
     onlyKeys(source, {"file", "where"}, "`source`");
@@ -362,8 +383,11 @@ class ManifestReader {
       }
     }
     if (const toml::node* timeout = root.get("timeout")) {
-      if (!numeric(*timeout) || !(*timeout->value<double>() > 0))
-        fail(lineOf(*timeout), "`timeout` must be a positive number of seconds");
+      const double seconds = numeric(*timeout) ? *timeout->value<double>() : 0.0;
+      if (!(seconds > 0 && seconds <= kMaxCaseTimeoutSeconds))
+        fail(lineOf(*timeout),
+             fmt::format("`timeout` must be a number of seconds above 0 and at most {:g} (a day)",
+                         kMaxCaseTimeoutSeconds));
       m.timeoutSeconds = *timeout->value<double>();
     }
     m.inputs = bindings(root, "inputs");
@@ -461,6 +485,34 @@ std::string readFile(const fs::path& path, const fs::path& manifest, const char*
 
 bool CaseSpec::has(const std::string& check) const {
   return std::find(checks.begin(), checks.end(), check) != checks.end();
+}
+
+std::string listingIdProblem(const std::string& id) {
+  const std::string form =
+      "an id is one or more '/'-separated names of letters, digits, '.', '-', '_' and '+' "
+      "(as in \"orange-book/14.1-fresnel\"): it becomes a folder below --out and --golden";
+  if (id.empty()) return "the id is empty; " + form;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = std::min(id.find('/', start), id.size());
+    const std::string name = id.substr(start, end - start);
+    if (name.empty())
+      return fmt::format("id `{}` has an empty name (a leading, trailing or doubled '/'); {}", id,
+                         form);
+    if (name == "." || name == "..")
+      return fmt::format("id `{}` has a `{}` name, which would leave its folder; {}", id, name,
+                         form);
+    for (char c : name)
+      if (!idCharacter(c))
+        return fmt::format("id `{}` holds {}; {}", id,
+                           c == ' ' ? std::string("a space")
+                           : std::isprint(static_cast<unsigned char>(c))
+                               ? fmt::format("`{}`", c)
+                               : fmt::format("the byte 0x{:02x}", static_cast<unsigned char>(c)),
+                           form);
+    if (end == id.size()) return {};
+    start = end + 1;
+  }
 }
 
 Manifest loadManifest(const fs::path& path) {

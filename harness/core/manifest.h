@@ -106,6 +106,16 @@ struct Manifest {
   double timeoutSeconds = 60;  // per case; `snell run --timeout` overrides
 };
 
+// The longest time a case may be given, in seconds (a day): the same
+// bound as `snell run --timeout`.
+inline constexpr double kMaxCaseTimeoutSeconds = 86400.0;
+
+// Why `id` cannot be a listing's id, or empty when it can. A case id is a
+// path below --out and --golden (<id>/<scene>/...), and a filter and an
+// expectations file name it: one or more '/'-separated names of letters,
+// digits, '.', '-', '_' and '+', none of them "." or "..".
+std::string listingIdProblem(const std::string& id);
+
 // Parses one manifest. Every problem is a UsageError of the form
 // "FILE:LINE: what is wrong; what to do".
 Manifest loadManifest(const std::filesystem::path& path);

@@ -15,6 +15,7 @@
 #include "core/errors.h"
 #include "core/glsl_declarations.h"
 #include "core/glsl_statements.h"
+#include "core/manifest.h"
 #include "core/shader_conventions.h"
 
 namespace snell {
@@ -286,7 +287,8 @@ std::vector<Capture> fragmentCaptures(const Stage& fragment, std::vector<std::st
     std::smatch match;
     if (!std::regex_search(statements[k].text, match, kVec3Local)) continue;
     if (constantInitialiser(statements[k].text))
-      continue;  // vec3(0.0, 1.0, 0.0): no vector computed
+      continue;                           // vec3(0.0, 1.0, 0.0): no vector computed
+    if (lookup(statements[k])) continue;  // a colour, not a direction the oracle computes
     locals.push_back({match[4].str(), "vec3", statements[k].lastLine, "computed here"});
     for (const std::string& id : identifiersIn(statements[k].text)) {
       for (const GlslDeclaration& d : fragment.declarations) {
@@ -330,10 +332,13 @@ void captureSection(std::ostringstream& out, const DraftRequest& request, const 
       outputs.push_back(tomlString(d.name));
   std::vector<Capture> captures =
       fragment ? fragmentCaptures(*fragment, leftOut) : std::vector<Capture>{};
+  const auto isInput = [](const Capture& c) { return c.comment.rfind("input", 0) == 0; };
   std::erase_if(captures, [&](const Capture& c) {
-    const bool input = c.comment.rfind("input", 0) == 0;
-    return !input && !gated(*fragment, true, c.name, c.line);
+    return !isInput(c) && !gated(*fragment, true, c.name, c.line);
   });
+  // Inputs are captured for the values computed from them: with none of
+  // those left, nothing in the fragment stage would be checked.
+  if (std::all_of(captures.begin(), captures.end(), isInput)) captures.clear();
   if (outputs.empty() && captures.empty())
     throw UsageError(fmt::format(
         "{}{}{}: nothing to read back: the vertex stage declares no outputs and the fragment "
@@ -417,10 +422,21 @@ image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
 )";
 }
 
+// A folder name as an id's name: what an id may not hold (a space, say)
+// becomes '-'.
+std::string idName(const std::string& folder) {
+  std::string name = folder;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_' &&
+        c != '+')
+      c = '-';
+  return name;
+}
+
 std::string defaultId(const fs::path& dir) {
   const fs::path absolute = fs::weakly_canonical(fs::absolute(dir));
-  const std::string name = absolute.filename().string();
-  const std::string parent = absolute.parent_path().filename().string();
+  const std::string name = idName(absolute.filename().string());
+  const std::string parent = idName(absolute.parent_path().filename().string());
   return parent.empty() ? name : parent + "/" + name;
 }
 
@@ -447,8 +463,12 @@ std::string draftManifest(const DraftRequest& request) {
       "# scene semantics).\n",
       vertex.file, fragment ? " and " : "", fragment ? fragment->file : "");
   std::vector<Line> head;
-  head.push_back({"id", tomlString(request.id.empty() ? defaultId(dir) : request.id),
-                  "unique; case ids are <id>/<scene>"});
+  const std::string id = request.id.empty() ? defaultId(dir) : request.id;
+  if (const std::string problem = listingIdProblem(id); !problem.empty())
+    throw UsageError(request.id.empty()
+                         ? fmt::format("{}: {}; name it with --id", dir.string(), problem)
+                         : "--id: " + problem);
+  head.push_back({"id", tomlString(id), "unique; case ids are <id>/<scene>"});
   // The folder's own name, also for "." or a trailing slash.
   head.push_back({"title", tomlString(fs::weakly_canonical(fs::absolute(dir)).filename().string()),
                   "one line for people"});

@@ -164,6 +164,20 @@ TEST_F(ManifestDraft, LearnOpenGlRefractionBindsWithoutRenaming) {
   expectRunnable(m);
 }
 
+// A statement that looks a colour up is no direction to check: Listing
+// 14.1's fragment stage (two lookups and a mix) gets no fragment capture,
+// where capturing `refractColor` and the input it reads left the derived
+// oracle nothing to compute, and snell run refused the draft.
+TEST_F(ManifestDraft, ALookedUpColourIsNotCaptured) {
+  const fs::path listing = SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel";
+  fs::copy_file(listing / "fresnel.vert", dir_ / "fresnel.vert");
+  fs::copy_file(listing / "fresnel.frag", dir_ / "fresnel.frag");
+  const Manifest m = draftAndLoad();
+  EXPECT_TRUE(m.captureFragment.empty()) << m.captureFragment.size();
+  EXPECT_EQ(m.captureVertex, (std::vector<std::string>{"Reflect", "Refract", "Ratio"}));
+  expectRunnable(m);
+}
+
 TEST_F(ManifestDraft, ThreeJsBuiltInsBindAndAPlainUniformIsLeftToTheAuthor) {
   put("glass.vert", kThreeVertex);
   put("glass.frag", kThreeFragment);

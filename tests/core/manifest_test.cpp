@@ -1,5 +1,6 @@
 #include "core/manifest.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -202,6 +203,53 @@ TEST_F(ManifestTest, UnknownSemanticNamesTheLineAndTheScene) {
         << error.what();
     EXPECT_NE(std::string(error.what()).find("scene.nonsense"), std::string::npos);
   }
+}
+
+// A case id becomes a folder below --out and --golden: an id that leaves
+// them (or names nothing) is refused at its line, before any file is written.
+TEST_F(ManifestTest, AnIdThatWouldLeaveItsFolderIsRefused) {
+  for (const char* bad :
+       {"../../escaped", "/tmp/absolute", "a/../b", "a//b", "a/", "./a", "a b/c", ""}) {
+    std::string text = kValid;
+    text.replace(text.find("\"x/y\""), 5, fmt::format("\"{}\"", bad));
+    const std::string message = errorOf(text);
+    EXPECT_NE(message.find("manifest.toml:1:"), std::string::npos) << bad << ": " << message;
+    EXPECT_NE(message.find("becomes a folder below --out and --golden"), std::string::npos)
+        << bad << ": " << message;
+  }
+  EXPECT_EQ(listingIdProblem("orange-book/14.1-fresnel"), "");
+  EXPECT_EQ(listingIdProblem("methods/fresnel/1-constant-mix"), "");
+}
+
+// TOML's nan and inf are numbers; a tolerance or a time limit must be a
+// finite one in its range, and a line number one that fits.
+TEST_F(ManifestTest, NumbersOutOfTheirRangeNameTheirLine) {
+  const std::string withImage = std::string(kValid) +
+                                "checks = [\"vectors\", \"image\"]\n"
+                                "image = { fail = 0.004, warn = 0.002, failpercent = 0.0, "
+                                "hardfail = 0.05 }\n";
+  EXPECT_EQ(loadManifest(write(withImage)).cases[0].image.fail, 0.004);
+  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
+           {"fail = 0.004", "fail = nan"},
+           {"warn = 0.002", "warn = inf"},
+           {"failpercent = 0.0", "failpercent = 250.0"}}) {
+    std::string text = withImage;
+    text.replace(text.find(from), from.size(), to);
+    const std::string message = errorOf(text);
+    EXPECT_NE(message.find("manifest.toml:19:"), std::string::npos) << to << ": " << message;
+  }
+  for (const char* timeout : {"timeout = 1e300", "timeout = nan", "timeout = 0"}) {
+    const std::string message = errorOf(std::string(timeout) + "\n" + kValid);
+    EXPECT_NE(message.find("manifest.toml:1:"), std::string::npos) << timeout << ": " << message;
+    EXPECT_NE(message.find("`timeout`"), std::string::npos) << timeout << ": " << message;
+  }
+  EXPECT_EQ(loadManifest(write("timeout = 86400\n" + std::string(kValid))).timeoutSeconds, 86400);
+  std::string text = kValid;
+  text.replace(text.find("vertex = \"a.vert\""), 17, "vertex = \"a.vert\", fragment = \"a.frag\"");
+  text.replace(text.find("vertex = [\"Reflect\"]"), 20,
+               "fragment = [{ name = \"r\", type = \"vec3\", line = 4294967309 }]");
+  EXPECT_NE(errorOf(text).find("`line` must be the fragment file's line"), std::string::npos)
+      << errorOf(text);
 }
 
 TEST_F(ManifestTest, FilterMatchesCaseIds) {
