@@ -10,7 +10,13 @@
 
 namespace snell {
 
-std::vector<CaseResult> readResultsFile(const std::filesystem::path& path) {
+std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
+                                        ResultsFileState* state) {
+  if (std::filesystem::is_directory(path))
+    throw UsageError(
+        fmt::format("{}: is a folder; give a results file written by "
+                    "`snell run --json`",
+                    path.string()));
   std::ifstream in(path);
   if (!in)
     throw UsageError(
@@ -24,17 +30,47 @@ std::vector<CaseResult> readResultsFile(const std::filesystem::path& path) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     try {
-      results.push_back(caseResultFromJson(nlohmann::json::parse(line)));
+      const nlohmann::json record = nlohmann::json::parse(line);
+      results.push_back(caseResultFromJson(record));
+      if (state && record.is_object() && record.value("incomplete", false))
+        state->incomplete = true;
     } catch (const nlohmann::json::exception& error) {
       // A run killed while writing leaves a last line with no newline: what
       // came before it is whole, and that case simply did not finish.
-      if (in.eof()) break;
+      if (in.eof()) {
+        if (state) state->tornLine = number;
+        break;
+      }
       throw UsageError(
           fmt::format("{}:{}: not a snell result record ({}); give a file written by "
                       "`snell run --json`",
                       path.string(), number, error.what()));
     }
   }
+  return results;
+}
+
+std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& path,
+                                                bool* incomplete) {
+  ResultsFileState state;
+  std::vector<CaseResult> results = readResultsFile(path, &state);
+  if (state.tornLine > 0)
+    throw UsageError(
+        fmt::format("{}:{}: the last record is cut off (a run killed while writing "
+                    "it?); finish the run with `snell run --resume {}`, or give a "
+                    "whole results file",
+                    path.string(), state.tornLine, path.string()));
+  if (results.empty())
+    throw UsageError(
+        fmt::format("{}: holds no results; give a results file written by "
+                    "`snell run --json`",
+                    path.string()));
+  if (state.incomplete)
+    fmt::print(stderr,
+               "snell: note: {} is an interrupted run (its records are marked incomplete): the "
+               "cases it did not reach are missing from it\n",
+               path.string());
+  if (incomplete) *incomplete = state.incomplete;
   return results;
 }
 

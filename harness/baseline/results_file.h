@@ -9,9 +9,25 @@
 
 namespace snell {
 
-// Throws UsageError with FILE:LINE for a missing file or a malformed record.
-// A torn last line (a run killed mid-write of FILE.partial) is dropped.
-std::vector<CaseResult> readResultsFile(const std::filesystem::path& path);
+// What a results file says of itself besides its records.
+struct ResultsFileState {
+  // Its last line was torn (a run killed mid-write): dropped from the records.
+  int tornLine = 0;
+  // Its records are marked incomplete: the run was interrupted.
+  bool incomplete = false;
+};
+
+// Throws UsageError with FILE:LINE for a missing file, a folder or a
+// malformed record. A torn last line (a run killed mid-write of
+// FILE.partial, which --resume reads) is dropped and reported in `state`.
+std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
+                                        ResultsFileState* state = nullptr);
+
+// For a command that judges a finished run (compare, merge, report): the
+// file must hold at least one record and no torn line; an interrupted run
+// is read, with a note on stderr that its cases not reached are missing.
+std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& path,
+                                                bool* incomplete = nullptr);
 
 // The JSON Lines text of `results`; `incomplete` marks every record as part
 // of a run that was interrupted before all its cases finished.

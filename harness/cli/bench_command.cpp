@@ -14,6 +14,7 @@
 #include "bench/vertex_chart.h"
 #include "bench/wavelength_chart.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -116,6 +117,7 @@ Command addBenchCommand(CLI::App& app) {
       "resolution, over the pixels both images cover. Timing is measured, never asserted.");
   return [options] {
     bench::errorMetric({}, options->metric);  // refuse an unknown metric before drawing
+    checkOutputs({}, {{"--out", options->out}});
     const std::filesystem::path out = options->out;
     // A folder of ladders (each a folder of method folders) runs each into
     // a folder of its own; a folder of methods is one ladder.

@@ -9,9 +9,11 @@
 
 #include "backends/backend_registry.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "cli/suite_session.h"
 #include "compare/image_compare.h"
 #include "compare/image_io.h"
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "golden/golden_store.h"
 #include "runner/image_check.h"
@@ -40,25 +42,40 @@ nlohmann::json metadataOf(const CaseResult& r, const Case& c, const Image& image
 }
 
 // What blessing changes, against the golden it replaces.
-std::string describeChange(const fs::path& goldenDir, const Case& c, const std::string& backend,
-                           const Image& image) {
+struct GoldenChange {
+  std::string description;
+  bool samePixels = false;    // the golden's image is this one, pixel for pixel
+  bool sameMetadata = false;  // and its metadata file says the same
+};
+
+GoldenChange changeOf(const fs::path& goldenDir, const Case& c, const std::string& backend,
+                      const Image& image, const nlohmann::json& metadata) {
   try {
     // A golden that cannot be read is replaced: the advice is never shown.
     const Golden old = readGolden(goldenDir, c.id, backend, image.width, image.height, "");
     const ImageComparison change = compareImages("golden", image, old.image, {}, c.spec.image);
-    if (change.maxError == 0) return "unchanged";
-    return fmt::format("changed: max error {:.6g} at ({}, {}), {} pixels over {}, {} over {}",
-                       change.maxError, change.maxX, change.maxY, change.failed, c.spec.image.fail,
-                       change.warned, c.spec.image.warn);
+    if (change.maxError == 0) {
+      const bool sameMetadata = old.metadata == metadata;
+      return {sameMetadata ? "unchanged, files left as they were"
+                           : "unchanged pixels, metadata rewritten (driver or tolerance)",
+              true, sameMetadata};
+    }
+    return {fmt::format("changed: max error {:.6g} at ({}, {}), {} pixels over {}, {} over {}",
+                        change.maxError, change.maxX, change.maxY, change.failed, c.spec.image.fail,
+                        change.warned, c.spec.image.warn)};
   } catch (const UsageError&) {
-    return "new";
+    return {"new"};
   }
 }
 
 int bless(const SuiteOptions& options) {
   if (!fs::is_directory(options.golden))
     throw UsageError(
-        fmt::format("{}: no such golden folder; create it or pass --golden DIR", options.golden));
+        fmt::format("{}: {}; create it or pass --golden DIR", options.golden,
+                    fs::exists(options.golden) ? "not a folder" : "no such golden folder"));
+  std::vector<OutputPath> files;
+  if (!options.json.empty()) files = resultsFileOutputs("--json", options.json);
+  checkOutputs(files, {{"--out", options.out}});
   const SuiteRun suite = runSuite(options, true, false);
   std::map<std::string, const Case*> cases;
   for (const Case& c : suite.cases) cases[c.id] = &c;
@@ -81,10 +98,18 @@ int bless(const SuiteOptions& options) {
       continue;
     }
     const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));
-    const std::string change = describeChange(options.golden, c, key, image);
-    writeGolden(options.golden, r.caseId, key, image, metadataOf(r, c, image));
+    const nlohmann::json metadata = metadataOf(r, c, image);
+    const GoldenChange change = changeOf(options.golden, c, key, image, metadata);
+    // The same pixels are not written again: an image file encoded anew
+    // differs in its bytes (a date in the EXR header, PNG compression), and
+    // each bless would be a binary change to review in version control.
+    if (!change.samePixels)
+      writeGolden(options.golden, r.caseId, key, image, metadata);
+    else if (!change.sameMetadata)
+      writeFileAtomically(goldenFiles(options.golden, r.caseId, key).metadata,
+                          metadata.dump(2) + "\n");
     written.insert({r.caseId, key});
-    fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change);
+    fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change.description);
   }
   return refused ? 1 : 0;
 }

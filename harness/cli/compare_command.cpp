@@ -1,12 +1,16 @@
 // `snell compare A B [C ...]`: each run against the one before it.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "baseline/compare_runs.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "core/errors.h"
 
 namespace snell::cli {
 namespace {
@@ -21,7 +25,15 @@ RunSide readSide(const std::string& text) {
     path = text.substr(0, at);
     side.backend = text.substr(at + 1);
   }
-  side.results = readResultsFile(path);
+  side.results = readFinishedResultsFile(path);
+  if (!side.backend.empty() &&
+      std::none_of(side.results.begin(), side.results.end(),
+                   [&](const CaseResult& r) { return r.backend == side.backend; })) {
+    std::set<std::string> backends;
+    for (const CaseResult& r : side.results) backends.insert(r.backend);
+    throw UsageError(fmt::format("{}: {} holds no results of backend `{}` (it holds {})", text,
+                                 path, side.backend, fmt::join(backends, ", ")));
+  }
   return side;
 }
 

@@ -10,12 +10,39 @@
 #include "baseline/merge_results.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "cli/results_output.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "runner/cross_api_check.h"
+#include "runner/image_check.h"
 
 namespace snell::cli {
+
+namespace {
+
+// The images the cross-backend comparisons will read: a missing one means
+// --out is not where the shards' images were gathered, which is the
+// user's to fix (exit 2), not a difference between backends.
+void requireImagesToCompare(const std::vector<Case>& cases, const std::vector<CaseResult>& results,
+                            const std::filesystem::path& out) {
+  for (const Case& c : cases) {
+    std::vector<std::filesystem::path> needed;
+    for (const CaseResult& r : results)
+      if (r.caseId == c.id && (r.status == Status::Pass || r.status == Status::QualityWarning))
+        needed.push_back(renderedImagePath(out, c.id, r.backend));
+    if (needed.size() < 2) continue;
+    needed.push_back(maskImagePath(out, c.id));
+    for (const std::filesystem::path& image : needed)
+      if (!std::filesystem::is_regular_file(image))
+        throw UsageError(fmt::format(
+            "{}: missing, and the cross-backend comparison of {} needs it; gather the shards' "
+            "--out folders into one and pass it as --out DIR",
+            image.string(), c.id));
+  }
+}
+
+}  // namespace
 
 Command addMergeCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
@@ -41,11 +68,21 @@ Command addMergeCommand(CLI::App& app) {
   sub->add_option("--expectations", options->expectations,
                   "Known failures, flakes and skips, as for `snell run`");
   return [options] {
+    std::vector<OutputPath> outputs = resultsFileOutputs("--json", options->json);
+    if (!options->junit.empty()) outputs.push_back({"--junit", options->junit});
+    std::vector<OutputPath> inputs;
+    for (const std::string& input : options->inputs)
+      inputs.push_back({"the input " + input, input});
+    checkOutputs(outputs, {}, inputs);
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     const std::vector<Case> catalog = expandCases(manifests, "");
     std::vector<ResultsFile> files;
-    for (const std::string& input : options->inputs)
-      files.push_back({input, readResultsFile(input)});
+    bool incomplete = false;
+    for (const std::string& input : options->inputs) {
+      bool inputIncomplete = false;
+      files.push_back({input, readFinishedResultsFile(input, &inputIncomplete)});
+      incomplete = incomplete || inputIncomplete;
+    }
     std::vector<CaseResult> results = mergeResults(files, catalog);
     std::vector<std::string> backends;
     for (const CaseResult& r : results)
@@ -60,8 +97,9 @@ Command addMergeCommand(CLI::App& app) {
           fmt::format("{}: no such folder; the cross-backend comparisons need the "
                       "shards' images: gather their --out folders and pass --out DIR",
                       options->out));
+    requireImagesToCompare(unchecked, results, options->out);
     checkAcrossApis(unchecked, options->out, results);
-    writeFileAtomically(options->json, toResultsJsonLines(results));
+    writeFileAtomically(options->json, toResultsJsonLines(results, incomplete));
     return reportResults(results, expectations, {},
                          {options->json, options->junit, 0, results.size(), 0, 0, 0, ""});
   };

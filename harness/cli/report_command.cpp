@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
 
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "report/html_report.h"
 
 namespace snell::cli {
@@ -38,8 +40,10 @@ Command addReportCommand(CLI::App& app) {
       ->check(CLI::ExistingDirectory);
   return [options] {
     const auto start = std::chrono::steady_clock::now();
+    checkOutputs({}, {{"-o", options->out}});
     std::vector<ReportRun> runs;
-    for (const std::string& file : options->results) runs.push_back({file, readResultsFile(file)});
+    for (const std::string& file : options->results)
+      runs.push_back({file, readFinishedResultsFile(file)});
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     ReportOptions report;
     report.imagesDir = options->images;
@@ -47,6 +51,15 @@ Command addReportCommand(CLI::App& app) {
     report.sweepDir = options->sweep;
     report.title = fmt::format("{}", fmt::join(options->results, ", "));
     const ReportStats stats = writeHtmlReport(runs, report, options->out);
+    const bool imageCases = std::any_of(runs.begin(), runs.end(), [](const ReportRun& run) {
+      return std::any_of(run.results.begin(), run.results.end(),
+                         [](const CaseResult& r) { return !r.images.empty(); });
+    });
+    if (imageCases && stats.heatMaps == 0 && stats.pictures == 0)
+      fmt::print(stderr,
+                 "snell: note: {} holds none of these runs' images, so the report shows no "
+                 "picture or heat map; pass --images the run's --out folder\n",
+                 options->images);
     fmt::print(
         "{}/index.html: {} cases, {} histograms, {} heat maps, {} pictures, {:.1f} MB, "
         "{:.2f} s\n",

@@ -1,6 +1,7 @@
 #include <chrono>
 
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "cli/results_output.h"
 #include "cli/suite_session.h"
 
@@ -27,6 +28,10 @@ Command addRunCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   return [options, junit] {
     const auto start = std::chrono::steady_clock::now();
+    std::vector<OutputPath> files;
+    if (!options->json.empty()) files = resultsFileOutputs("--json", options->json);
+    if (!junit->empty()) files.push_back({"--junit", *junit});
+    checkOutputs(files, {{"--out", options->out}});
     const SuiteRun suite = runSuite(*options, false, true);
     return reportResults(
         suite.results, suite.expectations, suite.skipped,

@@ -140,7 +140,9 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
 
 SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compareGoldens) {
   if (compareGoldens && !fs::is_directory(options.golden))
-    throw UsageError(fmt::format("{}: no such golden folder; pass --golden DIR", options.golden));
+    throw UsageError(
+        fmt::format("{}: {}; pass --golden DIR", options.golden,
+                    fs::exists(options.golden) ? "not a folder" : "no such golden folder"));
   SuiteRun run;
   run.manifests = loadCatalog(options.shaders);
   for (Case& c : expandCases(run.manifests, options.filter))

@@ -5,6 +5,7 @@
 
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "cli/output_paths.h"
 #include "core/errors.h"
 #include "core/manifest.h"
 #include "runner/backend_probe.h"
@@ -83,6 +84,9 @@ Command addSweepCommand(CLI::App& app) {
       driverArgs.insert(driverArgs.end(), {"--device", options->device});
     if (!options->glProvider.empty())
       driverArgs.insert(driverArgs.end(), {"--gl-provider", options->glProvider});
+    std::vector<OutputPath> files;
+    if (!options->json.empty()) files.push_back({"--json", options->json});
+    checkOutputs(files, {{"--out", options->out}});
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;
     sweepOptions.backends = splitBackendList(options->backend);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/image.h"
@@ -28,6 +29,13 @@ struct ImageComparison {
   std::map<std::string, std::size_t> masked;  // by reason (PixelMask name)
   std::string problem;  // set when the images could not be compared (size mismatch)
 };
+
+// The `against` of a comparison between two backends' images:
+// "other-backend:A/B" (runner/cross_api_check.h).
+inline constexpr std::string_view kOtherBackendPrefix = "other-backend:";
+inline bool isOtherBackendComparison(const ImageComparison& comparison) {
+  return comparison.against.rfind(kOtherBackendPrefix, 0) == 0;
+}
 
 // `mask` may be empty (nothing masked); otherwise width * height entries.
 ImageComparison compareImages(const std::string& against, const Image& observed,

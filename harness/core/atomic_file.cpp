@@ -43,7 +43,13 @@ void writeFileAtomically(const fs::path& path, const std::string& text) {
     out.flush();
     if (!out) throw UsageError(fmt::format("{}: write failed (disk full?)", temporary.string()));
   }
-  fs::rename(temporary, path);
+  std::error_code error;
+  fs::rename(temporary, path, error);
+  if (error) {
+    fs::remove(temporary);
+    throw UsageError(fmt::format("{}: cannot be written ({}); name a file in a writable folder",
+                                 path.string(), error.message()));
+  }
 }
 
 }  // namespace snell

@@ -375,7 +375,8 @@ class ReportBuilder {
         row.set("against", c.against);
         row.set("verdict", imageVerdictName(c.verdict));
         row.set("max_error", number(c.maxError));
-        row.set("at", fmt::format("({}, {})", c.maxX, c.maxY));
+        // No pixel differs: there is no place to name.
+        row.set("at", c.maxError > 0 ? fmt::format("({}, {})", c.maxX, c.maxY) : "-");
         row.set("failed", std::to_string(c.failed));
         row.set("compared", std::to_string(c.compared));
         std::string m;

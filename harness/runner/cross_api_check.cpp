@@ -31,7 +31,7 @@ void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path
         CaseResult& a = *ran[i];
         CaseResult& b = *ran[j];
         ImageComparison comparison;
-        const std::string against = "other-backend:" + a.backend + "/" + b.backend;
+        const std::string against = std::string(kOtherBackendPrefix) + a.backend + "/" + b.backend;
         try {
           comparison = compareImagesKept(
               store, against, readImageKept(store, renderedImagePath(outDir, c.id, b.backend)),
@@ -46,11 +46,15 @@ void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path
           r->images.push_back(comparison);
           if (comparison.verdict == ImageVerdict::Pass) continue;
           r->status = worstOf(r->status, Status::CompatibilityWarning);
+          if (!comparison.problem.empty()) {
+            r->message += fmt::format("{} and {} could not be compared: {}\n", a.backend, b.backend,
+                                      comparison.problem);
+            continue;
+          }
           r->message += fmt::format(
-              "{} and {} differ: max error {:.6g} at ({}, {}), {} of {} pixels over {}{}\n",
+              "{} and {} differ: max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
               a.backend, b.backend, comparison.maxError, comparison.maxX, comparison.maxY,
-              comparison.failed, comparison.compared, c.spec.image.fail,
-              comparison.problem.empty() ? "" : " (" + comparison.problem + ")");
+              comparison.failed, comparison.compared, c.spec.image.fail);
         }
       }
     }

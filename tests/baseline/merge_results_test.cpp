@@ -73,7 +73,7 @@ TEST(MergeResults, CrossCheckPendingOnlyForImageCasesWithoutOne) {
                                      imageCase("c", true)};
   std::vector<CaseResult> results = {result("a", "gl"), result("a", "vk"), result("c", "gl")};
   ImageComparison other;
-  other.against = "other-api";
+  other.against = "other-backend:gl/vk";
   results[0].images.push_back(other);
   const std::vector<Case> pending = casesWithoutCrossCheck(catalog, results);
   ASSERT_EQ(pending.size(), 1u);

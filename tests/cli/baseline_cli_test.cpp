@@ -192,6 +192,27 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
   for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k], b[k]) << k;
   EXPECT_TRUE(fs::exists(scratch / "merged.csv"));
   EXPECT_TRUE(fs::exists(scratch / "merged.xml"));
+  // A run whose backends were compared already merges into itself: no
+  // comparison is made twice, and no image is read (so none is needed).
+  const Outcome alone =
+      snell(fmt::format("merge {} --json {} --out {}", (scratch / "whole.jsonl").string(),
+                        (scratch / "alone.jsonl").string(), (scratch / "no-images").string()));
+  ASSERT_EQ(alone.code, 0) << alone.out;
+  const auto c = withoutTimings(records(scratch / "alone.jsonl"));
+  ASSERT_EQ(a.size(), c.size());
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_EQ(a[k], c[k]) << k;
+  // An output on an input, or two outputs on one file, is refused before
+  // anything is written.
+  const std::string job1 = (scratch / "job1.jsonl").string();
+  const std::string before = readText(job1);
+  const Outcome onInput = snell(fmt::format("merge {0} --json {0}", job1));
+  EXPECT_EQ(onInput.code, 2) << onInput.out;
+  EXPECT_NE(onInput.out.find("would destroy that input"), std::string::npos) << onInput.out;
+  EXPECT_EQ(readText(job1), before);
+  const Outcome onEachOther = snell(
+      fmt::format("merge {0} --json {1} --junit {1}", job1, (scratch / "same.jsonl").string()));
+  EXPECT_EQ(onEachOther.code, 2) << onEachOther.out;
+  EXPECT_FALSE(fs::exists(scratch / "same.jsonl"));
   // Overlapping shards are refused.
   const Outcome overlap =
       snell(fmt::format("merge {} {} --json {}", (scratch / "job1.jsonl").string(),
@@ -244,6 +265,16 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
   EXPECT_NE(readText(scratch / "r.xml").find("incomplete: interrupted by SIGTERM after 3 of 4"),
             std::string::npos)
       << readText(scratch / "r.xml");
+
+  // Merged, the records stay marked: the merge of an interrupted run is
+  // no complete run.
+  const Outcome merged = snell(fmt::format("merge {} --shaders {} --json {}", json.string(),
+                                           shaders.string(), (scratch / "merged.jsonl").string()));
+  EXPECT_EQ(merged.code, 0) << merged.out;
+  EXPECT_NE(merged.out.find("is an interrupted run"), std::string::npos) << merged.out;
+  const auto mergedRecords = records(scratch / "merged.jsonl");
+  ASSERT_EQ(mergedRecords.size(), 3u);
+  for (const auto& r : mergedRecords) EXPECT_EQ(r["incomplete"], true) << r["case"];
 
   // The endless case alone runs on resume, with a short limit.
   const Outcome resumed = snell(fmt::format(

@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "edited_listing.h"
 #include "json_lines.h"
@@ -69,6 +71,35 @@ TEST(Cli, AFolderWithNoListingsIsExit2SayingSo) {
               std::string::npos)
         << command << ": " << o.out;
   }
+  fs::remove_all(dir);
+}
+
+// Outputs that cannot be written, or would land on one another, are
+// refused before any case runs: not after minutes of work, not as an
+// internal error, and with nothing left behind.
+TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-outputs-{}", ::getpid());
+  fs::create_directories(dir / "folder");
+  std::ofstream(dir / "file") << "not a folder\n";
+  const std::string run = "run --filter 'orange-book/14.1-fresnel/sweep' --backend gl";
+  const std::string d = dir.string();
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {fmt::format("--json {0}/r.jsonl --junit {0}/r.jsonl", d),
+            "--json and --junit both name"},
+           {fmt::format("--json {0}/r.csv", d), "--json (its results.csv) both name"},
+           {fmt::format("--json {0}/folder", d), "/folder: is a folder"},
+           {fmt::format("--junit {0}/no-such/r.xml", d), "/no-such does not exist"},
+           {fmt::format("--out {0}/file", d), "/file is a file, not a folder"}}) {
+    const Outcome o = snell(run + " " + args);
+    EXPECT_EQ(o.code, 2) << args << ": " << o.out;
+    EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
+    EXPECT_EQ(o.out.find("internal error"), std::string::npos) << args << ": " << o.out;
+    EXPECT_EQ(o.out.find("[1/1]"), std::string::npos) << args << ": the case ran\n" << o.out;
+  }
+  EXPECT_FALSE(fs::exists(dir / "r.jsonl"));
+  EXPECT_FALSE(fs::exists(dir / "folder.partial"));
+  const Outcome report = snell(fmt::format("report /dev/null -o {}/file", d));
+  EXPECT_EQ(report.code, 2) << report.out;
   fs::remove_all(dir);
 }
 

@@ -103,4 +103,43 @@ TEST(CompareCli, MalformedFileIsExit2WithItsLine) {
   fs::remove(bad);
 }
 
+// A gate that reads a mistaken or unfinished file as a run with fewer cases
+// would pass with everything "removed": each of these is exit 2 instead.
+TEST(CompareCli, AFileThatIsNoFinishedRunIsExit2) {
+  const fs::path run = writeRun(
+      "whole.jsonl", {record("x/y/z", "gl", "Pass", 0.1), record("x/y/w", "gl", "Pass", 0.1)});
+  const fs::path empty = writeRun("empty.jsonl", {});
+  const fs::path torn = writeRun("torn.jsonl", {record("x/y/z", "gl", "Pass", 0.1)});
+  std::ofstream(torn, std::ios::app) << record("x/y/w", "gl", "Pass", 0.1).dump().substr(0, 40);
+  const fs::path folder = fs::temp_directory_path() / fmt::format("snell-compare-{}-dir", getpid());
+  fs::create_directories(folder);
+  for (const auto& [other, expected] : std::vector<std::pair<std::string, std::string>>{
+           {run.string() + "@nope", "holds no results of backend `nope` (it holds gl)"},
+           {folder.string(), "is a folder"},
+           {empty.string(), "holds no results"},
+           {torn.string(), torn.string() + ":2: the last record is cut off"}}) {
+    const Outcome o = snell(fmt::format("compare {}{} {}", run.string(),
+                                        other.find('@') != std::string::npos ? "@gl" : "", other));
+    EXPECT_EQ(o.code, 2) << other << "\n" << o.out;
+    EXPECT_NE(o.out.find(expected), std::string::npos) << other << "\n" << o.out;
+  }
+  for (const fs::path& path : {run, empty, torn, folder}) fs::remove(path);
+}
+
+// An interrupted run is compared (it is what there is), with a note that
+// its missing cases were never reached.
+TEST(CompareCli, AnInterruptedRunIsNoted) {
+  nlohmann::json unfinished = record("x/y/z", "gl", "Pass", 0.1);
+  unfinished["incomplete"] = true;
+  const fs::path whole =
+      writeRun("w.jsonl", {record("x/y/z", "gl", "Pass", 0.1), record("x/y/w", "gl", "Pass", 0.1)});
+  const fs::path part = writeRun("p.jsonl", {unfinished});
+  const Outcome o = snell(fmt::format("compare {} {}", whole.string(), part.string()));
+  EXPECT_EQ(o.code, 0) << o.out;
+  EXPECT_NE(o.out.find(part.string() + " is an interrupted run"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("1 removed"), std::string::npos) << o.out;
+  fs::remove(whole);
+  fs::remove(part);
+}
+
 }  // namespace

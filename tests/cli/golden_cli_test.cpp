@@ -10,6 +10,9 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "compare/image_io.h"
 #include "golden/golden_store.h"
@@ -41,7 +44,8 @@ class GoldenCli : public ::testing::Test {
   Outcome snell(const std::string& command, const std::string& extra = "") {
     const fs::path json = dir_ / "results.jsonl", log = dir_ / "log.txt";
     const std::string line = fmt::format(
-        "{} {} --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} --json {} {} >{} 2>&1",
+        "{} {} --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} --json {} {} >{} "
+        "2>&1",
         SNELL_BINARY, command, kCase, (dir_ / "shaders").string(), (dir_ / "golden").string(),
         (dir_ / "out").string(), json.string(), extra, log.string());
     const int status = std::system(line.c_str());
@@ -123,12 +127,38 @@ TEST_F(GoldenCli, BlessRestoresAChangedGoldenAndSaysByHowMuch) {
 }
 
 TEST_F(GoldenCli, BlessTouchesOnlyTheCasesItRan) {
-  const fs::path other = goldenFiles(dir_ / "golden", "orange-book/14.3-chromatic/sphere", "gl").image;
+  const fs::path other =
+      goldenFiles(dir_ / "golden", "orange-book/14.3-chromatic/sphere", "gl").image;
   const auto before = fs::last_write_time(other);
   const auto vkBefore = fs::last_write_time(goldenFiles(dir_ / "golden", kCase, "vk").image);
   EXPECT_EQ(snell("bless").code, 0);
   EXPECT_EQ(fs::last_write_time(other), before);
   EXPECT_EQ(fs::last_write_time(goldenFiles(dir_ / "golden", kCase, "vk").image), vkBefore);
+}
+
+// The same pixels blessed again leave the golden's files as they were:
+// encoded anew they would differ in their bytes (the EXR header's date, PNG
+// compression), and every bless would be a binary change to review.
+TEST_F(GoldenCli, BlessingTheSamePixelsAgainWritesNothing) {
+  ASSERT_EQ(snell("bless").code, 0);  // this machine's own image and metadata
+  const GoldenFiles files = goldenFiles(dir_ / "golden", kCase, "gl");
+  const auto bytes = [](const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  std::vector<std::pair<std::string, fs::file_time_type>> before;
+  for (const fs::path& path : {files.image, files.preview, files.metadata})
+    before.push_back({bytes(path), fs::last_write_time(path)});
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("blessed (unchanged, files left as they were)"), std::string::npos)
+      << o.output;
+  std::size_t k = 0;
+  for (const fs::path& path : {files.image, files.preview, files.metadata}) {
+    EXPECT_EQ(bytes(path), before[k].first) << path;
+    EXPECT_EQ(fs::last_write_time(path), before[k].second) << path;
+    ++k;
+  }
 }
 
 TEST_F(GoldenCli, BlessRefusesAnImageThatIsOffTheReference) {

@@ -1,0 +1,30 @@
+#pragma once
+// The files and folders a command will write, checked before it does any
+// work: a run of minutes must not end in "cannot rename: Is a directory",
+// and one output must not land on another or on an input.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace snell::cli {
+
+// A path a command writes, and the option that names it (for the message).
+struct OutputPath {
+  std::string option;
+  std::filesystem::path path;
+};
+
+// The files `run --json FILE` and `merge --json FILE` write: FILE, and
+// beside it FILE.partial, results.csv (FILE's extension replaced) and
+// FILE.timing.json.
+std::vector<OutputPath> resultsFileOutputs(const std::string& option,
+                                           const std::filesystem::path& file);
+
+// Throws UsageError (exit 2) naming the option when:
+// - a file is a folder, or its folder does not exist or is not writable;
+// - a folder exists as something other than a folder;
+// - two outputs, or an output and an input, are the same file.
+void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
+                  const std::vector<OutputPath>& inputs = {});
+
+}  // namespace snell::cli

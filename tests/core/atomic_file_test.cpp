@@ -1,0 +1,59 @@
+// Result files land whole under their final name or not at all.
+#include "core/atomic_file.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.h"
+
+namespace snell {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch() {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-atomic-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::string text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(AtomicFile, ReplacesTheWholeFile) {
+  const fs::path dir = scratch();
+  std::ofstream(dir / "r.jsonl") << "old, longer than the new text\n";
+  writeFileAtomically(dir / "r.jsonl", "new\n");
+  EXPECT_EQ(text(dir / "r.jsonl"), "new\n");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+// A folder where the file should go is the user's mistake: one clear
+// message (no "internal error: filesystem error"), the folder untouched and
+// no temporary file left beside it.
+TEST(AtomicFile, AFolderInTheWayIsAUsageErrorThatLeavesNothing) {
+  const fs::path dir = scratch();
+  fs::create_directories(dir / "results.jsonl");
+  try {
+    writeFileAtomically(dir / "results.jsonl", "x\n");
+    FAIL() << "no error";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("results.jsonl: cannot be written"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_TRUE(fs::is_directory(dir / "results.jsonl"));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace snell
