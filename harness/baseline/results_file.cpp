@@ -44,7 +44,7 @@ std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
       throw UsageError(
           fmt::format("{}:{}: not a snell result record ({}); give a file written by "
                       "`snell run --json`",
-                      path.string(), number, error.what()));
+                      path.string(), number, readableError(error)));
     }
   }
   return results;

@@ -52,9 +52,10 @@ std::vector<std::filesystem::path> drawAngleChart(const BenchResults& results,
                                                   const std::string& metric,
                                                   const std::filesystem::path& dir) {
   GnuplotBatch batch(dir);
-  batch.add(plotCommands(results, metric, dir,
-                         "svg size 1200,520 font 'sans,11' background '#ffffff' standalone",
-                         "angle.svg"));
+  batch.add(plotCommands(
+      results, metric, dir,
+      "svg size 1200,520 font 'sans,11' background '#ffffff' standalone name 'error_by_angle'",
+      "angle.svg"));
   batch.add(
       plotCommands(results, metric, dir, "pngcairo size 1200,520 font 'sans,10'", "angle.png"));
   batch.run();

@@ -166,9 +166,10 @@ std::vector<std::filesystem::path> drawParetoChart(const BenchResults& results,
                                                    const std::string& metric,
                                                    const std::filesystem::path& dir) {
   GnuplotBatch batch(dir);
-  batch.add(plotCommands(results, metric, dir,
-                         "svg size 900,560 font 'sans,11' background '#ffffff' standalone",
-                         "pareto.svg"));
+  batch.add(
+      plotCommands(results, metric, dir,
+                   "svg size 900,560 font 'sans,11' background '#ffffff' standalone name 'pareto'",
+                   "pareto.svg"));
   batch.add(
       plotCommands(results, metric, dir, "pngcairo size 900,560 font 'sans,10'", "pareto.png"));
   batch.run();

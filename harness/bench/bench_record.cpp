@@ -130,6 +130,9 @@ void writeBenchResults(const BenchResults& results, const std::filesystem::path&
 }
 
 BenchResults readBenchResults(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path))
+    throw UsageError(
+        fmt::format("{}: is a folder; give --results the bench.json in it", path.string()));
   std::ifstream in(path);
   if (!in)
     throw UsageError(
@@ -147,7 +150,7 @@ BenchResults readBenchResults(const std::filesystem::path& path) {
     throw UsageError(
         fmt::format("{}: not a `snell bench` results file ({}); run `snell bench` "
                     "to write one",
-                    path.string(), error.what()));
+                    path.string(), readableError(error)));
   }
 }
 

@@ -60,9 +60,10 @@ bool hasTessellations(const BenchResults& results) {
 std::vector<std::filesystem::path> drawVertexChart(const BenchResults& results,
                                                    const std::filesystem::path& dir) {
   GnuplotBatch batch(dir);
-  batch.add(plotCommands(results, dir,
-                         "svg size 1200,520 font 'sans,11' background '#ffffff' standalone",
-                         "vertices.svg"));
+  batch.add(plotCommands(
+      results, dir,
+      "svg size 1200,520 font 'sans,11' background '#ffffff' standalone name 'time_by_vertices'",
+      "vertices.svg"));
   batch.add(plotCommands(results, dir, "pngcairo size 1200,520 font 'sans,10'", "vertices.png"));
   batch.run();
   return {dir / "vertices.svg", dir / "vertices.png"};

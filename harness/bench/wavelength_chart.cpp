@@ -68,9 +68,10 @@ std::vector<std::filesystem::path> drawWavelengthChart(const BenchResults& resul
                                                        const std::string& metric,
                                                        const std::filesystem::path& dir) {
   GnuplotBatch batch(dir);
-  batch.add(plotCommands(results, metric, dir,
-                         "svg size 900,560 font 'sans,11' background '#ffffff' standalone",
-                         "wavelengths.svg"));
+  batch.add(plotCommands(
+      results, metric, dir,
+      "svg size 900,560 font 'sans,11' background '#ffffff' standalone name 'wavelengths'",
+      "wavelengths.svg"));
   batch.add(plotCommands(results, metric, dir, "pngcairo size 900,560 font 'sans,10'",
                          "wavelengths.png"));
   batch.run();

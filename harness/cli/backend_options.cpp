@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <sstream>
 
 #include "backends/backend_registry.h"
@@ -39,8 +41,14 @@ std::string backendListReason(const std::string& list, bool allowAll) {
   const std::vector<std::string> names = splitBackendList(list);
   if (names.empty())
     return allowAll ? "name at least one backend, or all" : "name at least one backend";
-  for (const std::string& name : names)
-    if (std::string reason = unknownBackendReason(name); !reason.empty()) return reason;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (std::string reason = unknownBackendReason(names[k]); !reason.empty()) return reason;
+    // Twice in one run, a backend's every case would run twice and write
+    // two records under one key, which merge and compare refuse.
+    if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(k), names[k]) !=
+        names.begin() + static_cast<std::ptrdiff_t>(k))
+      return fmt::format("`{}` is named twice; name each backend once", names[k]);
+  }
   return "";
 }
 

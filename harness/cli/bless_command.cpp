@@ -93,8 +93,8 @@ int bless(const SuiteOptions& options) {
     }
     if (r.status != Status::Pass) {
       ++refused;
-      fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status),
-                 r.message);
+      fmt::print("{} {}: not blessed, {}:\n{}{}", r.backend, r.caseId, statusName(r.status),
+                 r.message, r.message.empty() || r.message.back() == '\n' ? "" : "\n");
       continue;
     }
     const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));

@@ -10,6 +10,7 @@
 #include "baseline/compare_runs.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "cli/number_checks.h"
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -56,7 +57,8 @@ Command addCompareCommand(CLI::App& app) {
   sub->add_flag("--json", options->json, "Print the comparisons as JSON");
   sub->add_option("--drift", options->drift,
                   "Report a worst slack or image error that grew by more than this factor")
-      ->check(CLI::Range(1.0, 1e12));
+      ->check(CLI::Range(1.0, 1e12))
+      ->check(notNan());
   sub->footer("Exit 1 when any comparison has a regression (a status worse than before).");
   return [options] {
     std::vector<RunSide> sides;

@@ -18,8 +18,21 @@ namespace {
 
 void printWorstSlack(const std::vector<CaseResult>& results) {
   std::map<std::string, double> worst;
-  for (const CaseResult& r : results) worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
-  for (const auto& [backend, slack] : worst) fmt::print("{}: worst slack {:.3f}\n", backend, slack);
+  std::map<std::string, std::size_t> checked;
+  for (const CaseResult& r : results) {
+    worst[r.backend] = std::max(worst[r.backend], r.worstSlack());
+    for (const VaryingCheck& v : r.varyings) checked[r.backend] += v.checked;
+  }
+  // A backend that checked no vector has no slack to speak of (0.000 would
+  // read as a perfect score).
+  for (const auto& [backend, slack] : worst)
+    if (checked[backend] > 0) fmt::print("{}: worst slack {:.3f}\n", backend, slack);
+}
+
+// A result's message as the last lines of a block: ending in a newline,
+// so what is printed next starts a line of its own.
+std::string asLines(const std::string& message) {
+  return message.empty() || message.back() == '\n' ? message : message + "\n";
 }
 
 }  // namespace
@@ -56,11 +69,11 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   for (const JudgedCase& c : report.cases)
     if (c.outcome == Outcome::UnexpectedFail)
       fmt::print("\n{} on {}: {}\n{}", c.result->caseId, c.result->backend,
-                 statusName(c.result->status), c.result->message);
+                 statusName(c.result->status), asLines(c.result->message));
   for (const CaseResult& r : results)
     if (r.status == Status::ExpectedCompileError || r.status == Status::NotSupported)
-      fmt::print("\n{} on {}: {}: {}{}", r.caseId, r.backend, statusName(r.status), r.message,
-                 r.message.empty() || r.message.back() != '\n' ? "\n" : "");
+      fmt::print("\n{} on {}: {}: {}", r.caseId, r.backend, statusName(r.status),
+                 asLines(r.message));
   if (!expectations.empty() || report.count(Outcome::Flake) > 0) {
     printBaselineReport(std::cout, expectations, report);
   }

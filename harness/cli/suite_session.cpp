@@ -19,6 +19,7 @@
 #include "baseline/shard.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "cli/number_checks.h"
 #include "compare/image_library.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -130,7 +131,8 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
       ->check(CLI::Range(1, 256));
   sub.add_option("--timeout", options.timeout,
                  "Seconds a case may take before its worker is killed (default: the manifest's)")
-      ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
+      ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
+      ->check(notNan());
   sub.add_option("--oracle-cache", options.oracleCache,
                  "Folder where oracle results and compiled Vulkan programs are kept across "
                  "runs, or off (default: $SNELL_ORACLE_CACHE, else ~/.cache/snell/oracle)");

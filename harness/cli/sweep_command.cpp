@@ -1,10 +1,13 @@
 #include <fmt/format.h>
+#include <fnmatch.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 
 #include "cli/backend_options.h"
 #include "cli/commands.h"
+#include "cli/number_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
 #include "core/manifest.h"
@@ -58,7 +61,8 @@ Command addSweepCommand(CLI::App& app) {
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
   sweep->add_flag("--no-charts", options->noCharts, "Skip the gnuplot charts");
   sweep->add_option("--timeout", options->timeout, "Seconds each driver may take")
-      ->check(CLI::Range(0.001, 86400.0));  // a readable range, not "0 to DBL_MAX"
+      ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
+      ->check(notNan());
   sweep->footer(
       "Each break is implementation (a backend left its spec interval, or crashed), undefined\n"
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"
@@ -74,9 +78,22 @@ Command addSweepCommand(CLI::App& app) {
       return sweep::runListingWorker(options->listingWorker, options->listingStart,
                                      options->backend, backendOptions);
     }
-    // A --shaders folder with no listings is refused before the built-ins'
-    // sweep, not found empty after it.
-    if (!options->listings.empty()) loadCatalog(options->shaders);
+    // A --shaders folder with no listings, or a --listings glob that matches
+    // none, is refused before the built-ins' sweep, not found empty after it.
+    if (options->noBuiltins && options->listings.empty())
+      throw UsageError(
+          "nothing to sweep: --no-builtins with --listings '' leaves no built-in and "
+          "no listing; name listings with --listings GLOB");
+    if (!options->listings.empty()) {
+      const std::vector<Manifest> catalog = loadCatalog(options->shaders);
+      if (std::none_of(catalog.begin(), catalog.end(), [&](const Manifest& m) {
+            return fnmatch(options->listings.c_str(), m.id.c_str(), 0) == 0;
+          }))
+        throw UsageError(
+            fmt::format("no listing matches --listings '{}'; `snell list` shows the "
+                        "ids (a listing's id is its cases' ids without the scene)",
+                        options->listings));
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
     std::vector<std::string> driverArgs;
@@ -102,8 +119,9 @@ Command addSweepCommand(CLI::App& app) {
         probeBackends(executable, sweepOptions.backends, driverArgs);
     for (const BackendProbe& probe : probes) {
       if (!probe.up)
-        throw SetupError(fmt::format("backend {} does not come up here: {} (`snell devices`)",
-                                     probe.backend, probe.problem));
+        throw SetupError(fmt::format(
+            "backend {} does not come up here: {}{}", probe.backend, probe.problem,
+            probe.problem.find("snell devices") == std::string::npos ? " (`snell devices`)" : ""));
       sweepOptions.rules.push_back(precisionRulesForApi(probe.driver.api));
     }
     sweep::SweepResult result = sweep::runSweep(sweepOptions);

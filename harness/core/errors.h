@@ -16,4 +16,16 @@ struct SetupError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A library's exception text as a user reads it inside a message:
+// nlohmann's "[json.exception.out_of_range.403] key 'x' not found" without
+// its bracketed id.
+inline std::string readableError(const std::exception& error) {
+  std::string text = error.what();
+  if (text.rfind("[json.exception.", 0) == 0) {
+    const std::size_t end = text.find("] ");
+    if (end != std::string::npos) text.erase(0, end + 2);
+  }
+  return text;
+}
+
 }  // namespace snell

@@ -53,7 +53,7 @@ Golden readGolden(const fs::path& root, const std::string& caseId, const std::st
     golden.metadata = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& error) {
     throw UsageError(fmt::format("golden {}: not valid JSON ({}); {}", files.metadata.string(),
-                                 error.what(), hint));
+                                 readableError(error), hint));
   }
   return golden;
 }

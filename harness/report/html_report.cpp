@@ -377,6 +377,7 @@ class ReportBuilder {
         row.set("max_error", number(c.maxError));
         // No pixel differs: there is no place to name.
         row.set("at", c.maxError > 0 ? fmt::format("({}, {})", c.maxX, c.maxY) : "-");
+        row.set("warned", std::to_string(c.warned));
         row.set("failed", std::to_string(c.failed));
         row.set("compared", std::to_string(c.compared));
         std::string m;

@@ -33,13 +33,14 @@ std::filesystem::path addSlackHistogram(GnuplotBatch& batch,
                           k + 2, k ? "" : ":xtic(1)", varyings[k].name);
   const std::filesystem::path svg = batch.file("slack", ".svg");
   batch.add(fmt::format(
-      "set terminal svg size 460,240 font 'sans,10' background '#ffffff'\n"
+      "set terminal svg size 560,240 font 'sans,10' background '#ffffff' name 'slack_histogram'\n"
       "set output '{}'\n"
       "set style data histogram\nset style histogram clustered gap 1\n"
       "set style fill solid 0.8 border -1\nset boxwidth 0.9\n"
       "set logscale y\nset yrange [0.7:{}]\nset ylabel 'components'\n"
       "set xlabel 'slack (observed error / allowed error; over 1 is outside the spec)'\n"
-      "set key top right font 'sans,9'\n"
+      // Outside the plot: inside, the key sat over the out-of-spec bins.
+      "set key outside right top font 'sans,9'\n"
       "set object 1 rect from 5.5, graph 0 to 7.5, graph 1 behind fc rgb '#fde0dc' fs solid "
       "noborder\n"
       "plot {}",

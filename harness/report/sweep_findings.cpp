@@ -139,7 +139,7 @@ SweepFindings readSweepFindings(const fs::path& dir) {
     // the key or type that is wrong.
     throw UsageError(
         fmt::format("{}: not a sweep's JSON ({}): write it again with `snell sweep --out {}`",
-                    file.string(), e.what(), dir.string()));
+                    file.string(), readableError(e), dir.string()));
   }
 }
 

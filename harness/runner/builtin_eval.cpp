@@ -79,7 +79,7 @@ void parseLine(Line& line, std::string_view text, bool onDriver) {
       line.physics = evaluatePhysicsCall(object);
     }
   } catch (const json::exception& error) {
-    line.error = fmt::format("not valid JSON ({})", error.what());
+    line.error = fmt::format("not valid JSON ({})", readableError(error));
   } catch (const UsageError& error) {
     line.error = error.what();
   }

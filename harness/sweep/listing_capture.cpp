@@ -152,9 +152,11 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
     const bool hung = !child.stdoutClosed();
     const std::string how = child.finish(hung);
     captures[next].answered = false;
-    captures[next].problem = hung ? fmt::format("no answer within {:.0f} s (hang)", timeoutSeconds)
-                                  : fmt::format("the driver child ended ({}) on this draw: {}", how,
-                                                child.stderrTail(3));
+    captures[next].problem =
+        hung
+            ? fmt::format("no answer within {:.3g} s (hang, or --timeout too short)",
+                          timeoutSeconds)
+            : fmt::format("the driver child ended ({}) on this draw: {}", how, child.stderrTail(3));
     ++next;  // the next child starts after the draw that crashed
   }
   return captures;

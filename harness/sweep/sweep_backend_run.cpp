@@ -137,10 +137,13 @@ std::vector<Observation> runEvalChild(const std::string& executable, const std::
   hung = !child.stdoutClosed();
   const std::string how = child.finish(hung);
   const std::string problem =
-      hung ? fmt::format("no answer within {:.0f} s", timeoutSeconds)
+      hung ? fmt::format("no answer within {:.3g} s (--timeout)", timeoutSeconds)
            : fmt::format("snell eval --backend {} ended ({}) before answering: {}", backend, how,
                          child.stderrTail(3));
-  for (std::size_t k = answered; k < pointCount; ++k) observations[k].problem = problem;
+  for (std::size_t k = answered; k < pointCount; ++k) {
+    observations[k].problem = problem;
+    observations[k].timedOut = hung;
+  }
   return observations;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -81,10 +82,16 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
               const std::vector<Curve>& curves) {
   if (curves.empty()) return;
   const std::string body = settings + plotCommands(curves);
+  // gnuplot's `name` is the SVG's <title> (a tooltip, and what a screen
+  // reader announces): letters, digits and '_' only.
+  std::string name = stem;
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
+      '_');
   batch.add(fmt::format(
-      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced\n"
-      "set output '{}.svg'\n{}",
-      stem, body));
+      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced "
+      "name '{}'\nset output '{}.svg'\n{}",
+      name, stem, body));
   batch.add(fmt::format(
       "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem,
       body));
@@ -95,7 +102,7 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
 // The closed-form critical angle on an angle x eta map: sin(theta_c) = 1 / eta.
 std::vector<Curve> withCriticalAngle(std::vector<Curve> curves) {
   curves.push_back({"critical angle, eta = 1/sin(theta)", "",
-                    "(x > 23.5 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
+                    "(x > 23.5 && x <= 90 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
   return curves;
 }
 
@@ -119,13 +126,18 @@ std::string classColour(const std::string& cls) {
 
 // One map per listing and backend over angle x eta: where the listing
 // breaks, coloured by whose fault. Breaks of a draw with no eta (0) have
-// no place on the map.
+// no place on the map, nor have bad inputs (zero, denormal, NaN or
+// infinite vectors, drawn at one grid point): the table lists those. Back
+// faces (past 90 degrees) widen the angle axis to 180.
 void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
                     const ListingSweepResult& listings, const std::string& mapAxes) {
   using Curves = std::map<std::pair<std::string, std::string>, std::string>;  // (class, kind)
   std::map<std::pair<std::string, std::string>, Curves> maps;                 // (listing, backend)
+  std::map<std::pair<std::string, std::string>, bool> backFaces;
   for (const ListingBreak& b : listings.breaks) {
     if (!(b.eta > 0) || !std::isfinite(b.angleDegrees)) continue;
+    if (b.input != "grid" && b.input != "back-face") continue;
+    if (b.angleDegrees > 90) backFaces[{b.listing, b.backend}] = true;
     const std::string kind = b.kind + (b.frame == "unit" ? "" : ", " + b.frame);
     maps[{b.listing, b.backend}][{breakClassName(b.cls), kind}] +=
         fmt::format("{:.10g} {:.10g}\n", b.angleDegrees, b.eta);
@@ -141,13 +153,17 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
           {fmt::format("{} ({})", classKind.second, classKind.first), file,
            fmt::format("with points ps 0.6 lc rgb '{}'", classColour(classKind.first))});
     }
-    addChart(
-        batch, written, outDir, stem,
-        mapAxes +
-            fmt::format("set title '{} on {}: where it breaks'\n"
-                        "set key outside right top Left reverse font ',8' title 'kind (class)'\n",
-                        quotable(key.first), quotable(key.second)),
-        withCriticalAngle(plotted));
+    const std::string angles =
+        backFaces[key] ? "set xrange [0:180]\nset xlabel 'incidence angle (degrees; past 90: "
+                         "back faces)'\nset arrow from 90, graph 0 to 90, graph 1 nohead dt 3\n"
+                       : "";
+    addChart(batch, written, outDir, stem,
+             mapAxes + angles +
+                 fmt::format("set title '{} on {}: where it breaks (bad inputs: in the table)'\n"
+                             "set key outside right top Left reverse font ',10' title 'kind "
+                             "(class)'\n",
+                             quotable(key.first), quotable(key.second)),
+             withCriticalAngle(plotted));
   }
 }
 
@@ -155,6 +171,7 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
 
 std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
   ChartData data(outDir);
+  double reflectWorst = 0;
   for (const BackendSweep& sweep : result.sweeps) {
     if (sweep.backend == "oracle") continue;  // its slack is the reference itself
     for (std::size_t k = 0; k < result.points.size(); ++k) {
@@ -164,8 +181,10 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       if (p.call.fn == "refract" && charted(p.eta))
         data.add(fmt::format("slack/refract/{} eta {:.4g}", sweep.backend, p.eta), p.angleDegrees,
                  o.slack);
-      if (p.call.fn == "reflect")
+      if (p.call.fn == "reflect") {
         data.add("slack/reflect/" + sweep.backend, p.angleDegrees, o.slack);
+        reflectWorst = std::max(reflectWorst, o.slack);
+      }
     }
   }
   for (const MethodSample& s : result.methodSamples)
@@ -189,12 +208,17 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       "set key outside right\n";
   addChart(batch, written, outDir, "sweep-refract-slack",
            angleAxis +
-               "set title 'refract(): slack (error / allowed error) against angle'\n"
+               "set title 'refract(): slack (error / allowed error) against angle, eta 0.66 "
+               "and 1.5 (total internal reflection, the zero vector, at 0)'\n"
                "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
            data.curves("slack/refract/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
            angleAxis +
-               "set title 'reflect(): slack against angle'\nset ylabel 'slack'\nset yrange [0:*]\n",
+               fmt::format("set title 'reflect(): slack (error / allowed error) against angle{}'\n"
+                           "set ylabel 'slack (1 = edge of the spec)'\nset yrange [{}]\n",
+                           // All 0 is a result: said, and the points kept off the axis line.
+                           reflectWorst > 0 ? "" : " (every result exact: slack 0 throughout)",
+                           reflectWorst > 0 ? "0:*" : "-0.05:1"),
            data.curves("slack/reflect/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "

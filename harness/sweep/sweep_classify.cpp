@@ -58,8 +58,10 @@ std::vector<Break> classifyPoint(const SweepPoint& point, std::size_t index, con
                                  const std::string& backend) {
   std::vector<Break> breaks;
   if (!o.answered) {
-    breaks.push_back(
-        makeBreak(point, index, backend, "crash", BreakClass::Implementation, o.problem, {}));
+    // A child cut off at --timeout did not crash: the kind says which, so
+    // a limit set too short reads as what it is.
+    breaks.push_back(makeBreak(point, index, backend, o.timedOut ? "timeout" : "crash",
+                               BreakClass::Implementation, o.problem, {}));
     return breaks;
   }
   const bool open = specOpen(point, o);

@@ -22,7 +22,7 @@ struct Break {
   std::string function;   // "refract", "reflect", or a Fresnel method
   std::string backend;    // "oracle", "gl", "vk", "gl|vk" for a disagreement, "physics" for methods
   std::size_t point = 0;  // index into the sweep's points (builtins)
-  std::string kind;       // crash, nan_or_inf_output, outside_spec, zero_vector_direction,
+  std::string kind;       // crash, timeout, nan_or_inf_output, outside_spec, zero_vector_direction,
                           // backend_disagreement, discontinuity, ...
   BreakClass cls = BreakClass::Implementation;
   std::string detail;

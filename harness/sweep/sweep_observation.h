@@ -8,6 +8,7 @@ namespace snell::sweep {
 struct Observation {
   bool answered = false;  // false: the backend crashed or hung before answering
   std::string problem;    // when not answered: how the backend ended
+  bool timedOut = false;  // not answered within --timeout (a hang, or a limit set too short)
   std::vector<double>
       value;  // the backend's fp32 result (the oracle's: its strict fp32 evaluation)
   std::vector<double> exact;   // exact math on the fp32 inputs

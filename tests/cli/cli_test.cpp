@@ -103,6 +103,23 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   fs::remove_all(dir);
 }
 
+// Values CLI11 lets through that would run something meaningless: nan for
+// a time or a factor (every range check is false for it), a backend named
+// twice (every case twice, two records under one key), a sweep of nothing.
+TEST(Cli, OptionsThatMeanNothingAreExit2) {
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"run --timeout nan", "not nan"},
+           {"sweep --timeout nan", "not nan"},
+           {"compare --drift nan a b", "not nan"},
+           {"run --backend gl,gl", "`gl` is named twice"},
+           {"sweep --listings 'no-such-listing*'", "no listing matches --listings"},
+           {"sweep --no-builtins --listings ''", "nothing to sweep"}}) {
+    const Outcome o = snell(args);
+    EXPECT_EQ(o.code, 2) << args << ": " << o.out;
+    EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
+  }
+}
+
 TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
   const Outcome o = snell("run --filter 'no-such/*'");
   EXPECT_EQ(o.code, 2);
