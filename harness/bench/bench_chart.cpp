@@ -58,8 +58,18 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
   auto shownError = [&](const BenchRecord& r) {
     return std::max(errorMetric(r.error, metric), 1e-6);
   };
+  // The 10th-90th percentile spread of each time, drawn as a bar: two
+  // methods whose bars overlap were not told apart by this run.
+  const auto spread = [](const BenchRecord& r) {
+    const FrameTiming* t = r.timings.empty() ? nullptr : &r.timings.back();
+    const bool measured = t && t->p90Ms >= t->p10Ms && t->p10Ms > 0;
+    return measured ? std::pair{t->p10Ms, t->p90Ms} : std::pair{r.msPerFrame(), r.msPerFrame()};
+  };
   std::vector<std::pair<double, double>> all;
-  for (const BenchRecord& r : results.records) all.push_back({r.msPerFrame(), shownError(r)});
+  for (const BenchRecord& r : results.records) {
+    all.push_back({spread(r).first, shownError(r)});
+    all.push_back({spread(r).second, shownError(r)});
+  }
   const ChartRanges ranges = chartRanges(all);
 
   std::string series;
@@ -76,7 +86,8 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
       for (const BenchRecord& r : results.records) {
         if (r.backend != backend) continue;
         const double error = shownError(r);
-        out << r.msPerFrame() << ' ' << error << " \"" << shortMethodName(r.method) << "\"\n";
+        out << r.msPerFrame() << ' ' << error << " \"" << shortMethodName(r.method) << "\" "
+            << spread(r).first << ' ' << spread(r).second << '\n';
         costs.push_back({r.msPerFrame(), error});
         labelled.push_back({labelColumn(r.msPerFrame(), ranges.xLow, ranges.xHigh),
                             labelLine(error, ranges.yLow, ranges.yHigh),
@@ -92,7 +103,7 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
     }
     series += fmt::format(
         "{}'{}' using 1:2 with linespoints lc {} lw 2 pt 7 ps 1.4 title '{} Pareto front', "
-        "'{}' using 1:2 with points lc {} pt 6 ps 1.4 notitle",
+        "'{}' using 1:2:4:5 with xerrorbars lc {} pt 6 ps 1.4 notitle",
         series.empty() ? "" : ", ", front, colour, backend, points, colour);
     ++colour;
   }
@@ -118,7 +129,8 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
       "set terminal {}\nset output '{}'\n"
       "set title '{} methods on the {} scene: error against the physics reference vs time "
       "per frame ({}px)' font ',10'\n"
-      "set xlabel 'ms per frame (median of warm repeats)'\nset ylabel '{}'\n"
+      "set xlabel 'ms per frame (median of warm repeats; bars: 10th to 90th percentile)'\n"
+      "set ylabel '{}'\n"
       "set logscale y\nset grid\nset key top right\nset xrange [{}:{}]\nset yrange [{}:{}]\n"
       "{}plot {}",
       terminal, output,

@@ -271,10 +271,16 @@ class ReportBuilder {
           cell.set("status", "-");
           cell.set("slack", "");
         } else {
-          cell.set("status", statusName(it->second->status));
-          cell.set("slack", it->second->componentsChecked()
-                                ? "slack " + number(it->second->worstSlack())
-                                : "-");
+          const CaseResult& r = *it->second;
+          cell.set("status", statusName(r.status));
+          std::string text = r.componentsChecked() ? "slack " + number(r.worstSlack()) : "-";
+          // An image that did not pass is what the status is about: its
+          // largest error and pixels over the fail threshold are shown too.
+          for (const ImageComparison& c : r.images)
+            if (c.verdict != ImageVerdict::Pass)
+              text += fmt::format(" · {} {} ({} px over fail)", c.against, number(c.maxError),
+                                  c.failed);
+          cell.set("slack", text);
         }
         cells.push_back(cell);
       }

@@ -125,6 +125,10 @@ TEST(HtmlReport, RendersInHeadlessChromiumWithEveryImageEmbedded) {
   EXPECT_NE(html.find("gl against the reference: 13 pixels over 0.004"), std::string::npos);
   EXPECT_NE(html.find("vk against gl: 13 pixels over 0.004"), std::string::npos);
   EXPECT_NE(html.find("softpipe"), std::string::npos);
+  // The matrix cell of the failing image says what failed (its slack alone
+  // read as a passing case's), and the passing one does not.
+  EXPECT_NE(html.find("slack 0.73 · reference 0.02 (13 px over fail)"), std::string::npos);
+  EXPECT_EQ(html.find("reference 0.0005 ("), std::string::npos);
   // Every image is embedded and decodes: PNGs start with the PNG signature,
   // charts are SVG.
   const std::regex img("<img[^>]*src=\"([^\"]*)\"");
