@@ -91,7 +91,7 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
 void printComparison(std::ostream& out, const RunComparison& c, const DriftRule& rule) {
   fmt::print(out,
              "{} -> {}: {} regressions, {} fixes, {} changes, {} new, {} removed, {} drifted "
-             "(grew more than {}x), {} unchanged\n",
+             "(grew more than {}x), {} with the same status (drifted ones included)\n",
              c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.added.size(),
              c.removed.size(), c.drift.size(), rule.factor, c.unchanged);
   for (const auto& [word, list] : {std::pair{"regression", &c.regressions},

@@ -98,8 +98,11 @@ Command addBenchCommand(CLI::App& app) {
                    "vertex count (default: the scene's own, a quarter and four times it; the "
                    "error is measured at the scene's own)")
       ->delimiter(',');
-  bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution");
-  bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw");
+  // Ranges stated here: past int, CLI11 says only "Could not convert".
+  bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution")
+      ->check(CLI::Range(1, 100000));
+  bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw")
+      ->check(CLI::Range(0, 100000));
   bench->add_option("--reference-wavelengths", options->run.referenceWavelengths,
                     "Wavelengths of a dispersion ladder's spectral reference");
   bench->add_option("--out", options->out,

@@ -53,7 +53,11 @@ Command addCompareCommand(CLI::App& app) {
                   "Results files (snell run --json), oldest first; FILE@gl selects one backend, "
                   "so FILE@gl FILE@vk compares the two halves of a run")
       ->required()
-      ->expected(2, 1000);
+      // Two or more: the most CLI11 allows, so that its help says "..." and
+      // not "x 2"; fewer than two is refused with the count.
+      ->expected(
+          2,
+          CLI::detail::expected_max_vector_size);  // CLI11 would print "TEXT x 2" for two or more
   sub->add_flag("--json", options->json, "Print the comparisons as JSON");
   sub->add_option("--drift", options->drift,
                   "Report a worst slack or image error that grew by more than this factor")

@@ -39,6 +39,7 @@ Command addServeCommand(CLI::App& app) {
   serve
       ->add_option("--idle-exit", options->idleExit,
                    "Stop after this many seconds without a request (0: never)")
+      ->check(CLI::Range(0, 604800))  // a week; past the type, CLI11 says only "Could not convert"
       ->capture_default_str();
   serve->footer(
       R"(Runs in the foreground until SIGINT or SIGTERM, --idle-exit, or a changed file: before
