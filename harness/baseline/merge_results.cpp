@@ -37,18 +37,4 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
   return results;
 }
 
-std::vector<Case> casesWithoutCrossCheck(const std::vector<Case>& catalog,
-                                         const std::vector<CaseResult>& results) {
-  std::set<std::string> ran, checked;
-  for (const CaseResult& r : results) {
-    ran.insert(r.caseId);
-    if (std::any_of(r.images.begin(), r.images.end(), isOtherBackendComparison))
-      checked.insert(r.caseId);
-  }
-  std::vector<Case> cases;
-  for (const Case& c : catalog)
-    if (c.spec.has("image") && ran.count(c.id) && !checked.count(c.id)) cases.push_back(c);
-  return cases;
-}
-
 }  // namespace snell

@@ -21,10 +21,4 @@ struct ResultsFile {
 std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
                                      const std::vector<Case>& catalog);
 
-// The image cases of `results` whose backends' images have not been compared
-// with each other yet (their backends ran in different shards): the
-// cross-backend check runs on these after a merge, so splitting a run drops no check.
-std::vector<Case> casesWithoutCrossCheck(const std::vector<Case>& catalog,
-                                         const std::vector<CaseResult>& results);
-
 }  // namespace snell

@@ -54,12 +54,21 @@ std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& pat
                                                 bool* incomplete) {
   ResultsFileState state;
   std::vector<CaseResult> results = readResultsFile(path, &state);
-  if (state.tornLine > 0)
-    throw UsageError(
-        fmt::format("{}:{}: the last record is cut off (a run killed while writing "
-                    "it?); finish the run with `snell run --resume {}`, or give a "
-                    "whole results file",
-                    path.string(), state.tornLine, path.string()));
+  if (state.tornLine > 0) {
+    // Only a run's FILE.partial can be torn (the results file is renamed
+    // into place whole): --resume finishes it into FILE.
+    const std::string file = path.string();
+    const std::string partial = ".partial";
+    const bool isPartial = file.size() > partial.size() &&
+                           file.compare(file.size() - partial.size(), partial.size(), partial) == 0;
+    throw UsageError(fmt::format(
+        "{}:{}: the last record is cut off (a run killed while writing it); {}", file,
+        state.tornLine,
+        isPartial ? fmt::format("finish the run with `snell run --resume {} --json {}` and the "
+                                "run's own options",
+                                file, file.substr(0, file.size() - partial.size()))
+                  : std::string("give a whole results file")));
+  }
   if (results.empty())
     throw UsageError(
         fmt::format("{}: holds no results; give a results file written by "

@@ -10,6 +10,7 @@
 #include "backends/backend_registry.h"
 #include "cli/commands.h"
 #include "cli/output_paths.h"
+#include "cli/results_output.h"
 #include "cli/suite_session.h"
 #include "compare/image_compare.h"
 #include "compare/image_io.h"
@@ -93,8 +94,8 @@ int bless(const SuiteOptions& options) {
     }
     if (r.status != Status::Pass) {
       ++refused;
-      fmt::print("{} {}: not blessed, {}:\n{}{}", r.backend, r.caseId, statusName(r.status),
-                 r.message, r.message.empty() || r.message.back() == '\n' ? "" : "\n");
+      fmt::print("{} {}: not blessed, {}:\n{}", r.backend, r.caseId, statusName(r.status),
+                 asLines(r.message));
       continue;
     }
     const Image image = readImage(renderedImagePath(options.out, r.caseId, r.backend));
@@ -103,11 +104,14 @@ int bless(const SuiteOptions& options) {
     // The same pixels are not written again: an image file encoded anew
     // differs in its bytes (a date in the EXR header, PNG compression), and
     // each bless would be a binary change to review in version control.
-    if (!change.samePixels)
+    const GoldenFiles files = goldenFiles(options.golden, r.caseId, key);
+    if (!change.samePixels) {
       writeGolden(options.golden, r.caseId, key, image, metadata);
-    else if (!change.sameMetadata)
-      writeFileAtomically(goldenFiles(options.golden, r.caseId, key).metadata,
-                          metadata.dump(2) + "\n");
+    } else {
+      // The image kept; what is missing or stale beside it is written.
+      if (!fs::is_regular_file(files.preview)) writeImageAtomically(files.preview, image);
+      if (!change.sameMetadata) writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+    }
     written.insert({r.caseId, key});
     fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change.description);
   }

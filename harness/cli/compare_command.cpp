@@ -25,6 +25,9 @@ RunSide readSide(const std::string& text) {
   if (!std::filesystem::exists(text) && at != std::string::npos) {
     path = text.substr(0, at);
     side.backend = text.substr(at + 1);
+    if (side.backend.empty())
+      throw UsageError(
+          fmt::format("{}: name a backend after the @ (FILE@gl), or drop the @", text));
   }
   side.results = readFinishedResultsFile(path);
   if (!side.backend.empty() &&

@@ -10,7 +10,6 @@
 #include "core/errors.h"
 #include "core/manifest.h"
 #include "core/manifest_draft.h"
-#include "core/whole_file.h"
 #include "derived/lower_glsl.h"
 
 namespace snell::cli {
@@ -66,19 +65,20 @@ Command addInitCommand(CLI::App& app) {
         return what.substr(0, what.find("; give the listing"));
       }
     };
-    const std::filesystem::path path = writeDraftManifest(options->request, options->force);
+    const DraftWritten written = writeDraftManifest(options->request, options->force);
+    const std::string path = written.path.string();
     const std::string dir = shellWord(options->dir);
     // An image case of a new listing fails on its missing golden wherever
     // the driver has goldens for other listings: blessing comes first.
-    if (readWholeFile(path).value_or("").find("\"image\"]") != std::string::npos)
+    if (written.imageCases)
       fmt::print(
           "wrote {}: fill in the lines marked FILL IN, then `snell bless --shaders {}` to write "
           "the image cases' goldens (only images that match the CPU reference are blessed), and "
           "`snell run --shaders {}`\n",
-          path.string(), dir, dir);
+          path, dir, dir);
     else
       fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
-                 path.string(), dir);
+                 path, dir);
     return 0;
   };
 }

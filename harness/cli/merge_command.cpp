@@ -21,24 +21,27 @@ namespace snell::cli {
 
 namespace {
 
-// The images the cross-backend comparisons will read: a missing one means
-// --out is not where the shards' images were gathered, which is the
-// user's to fix (exit 2), not a difference between backends.
-void requireImagesToCompare(const std::vector<Case>& cases, const std::vector<CaseResult>& results,
+// The images the pending cross-backend comparisons will read (pairs of
+// backends that ran in different shards): a missing one means --out is not
+// where the shards' images were gathered, which is the user's to fix
+// (exit 2), not a difference between backends.
+void requireImagesToCompare(const std::vector<BackendPair>& pairs,
                             const std::filesystem::path& out) {
-  for (const Case& c : cases) {
-    std::vector<std::filesystem::path> needed;
-    for (const CaseResult& r : results)
-      if (r.caseId == c.id && (r.status == Status::Pass || r.status == Status::QualityWarning))
-        needed.push_back(renderedImagePath(out, c.id, r.backend));
-    if (needed.size() < 2) continue;
-    needed.push_back(maskImagePath(out, c.id));
-    for (const std::filesystem::path& image : needed)
+  if (!pairs.empty() && !std::filesystem::is_directory(out))
+    throw UsageError(
+        fmt::format("{}: no such folder; the cross-backend comparisons need the "
+                    "shards' images: gather their --out folders and pass --out DIR",
+                    out.string()));
+  for (const BackendPair& pair : pairs) {
+    const std::string& id = pair.imageCase->id;
+    for (const std::filesystem::path& image :
+         {renderedImagePath(out, id, pair.a->backend), renderedImagePath(out, id, pair.b->backend),
+          maskImagePath(out, id)})
       if (!std::filesystem::is_regular_file(image))
         throw UsageError(fmt::format(
-            "{}: missing, and the cross-backend comparison of {} needs it; gather the shards' "
+            "{}: missing, and the comparison of {} on {} and {} needs it; gather the shards' "
             "--out folders into one and pass it as --out DIR",
-            image.string(), c.id));
+            image.string(), id, pair.a->backend, pair.b->backend));
   }
 }
 
@@ -91,17 +94,18 @@ Command addMergeCommand(CLI::App& app) {
     ExpectationSet expectations;
     if (!options->expectations.empty())
       expectations = loadExpectations(options->expectations, backends, todayUtc());
-    std::vector<Case> unchecked = casesWithoutCrossCheck(catalog, results);
-    if (!unchecked.empty() && !std::filesystem::is_directory(options->out))
-      throw UsageError(
-          fmt::format("{}: no such folder; the cross-backend comparisons need the "
-                      "shards' images: gather their --out folders and pass --out DIR",
-                      options->out));
-    requireImagesToCompare(unchecked, results, options->out);
-    checkAcrossApis(unchecked, options->out, results);
+    requireImagesToCompare(pendingBackendPairs(catalog, results), options->out);
+    checkAcrossApis(catalog, options->out, results);
     writeFileAtomically(options->json, toResultsJsonLines(results, incomplete));
-    return reportResults(results, expectations, {},
-                         {options->json, options->junit, 0, results.size(), 0, 0, 0, ""});
+    ResultsOutput output;
+    output.json = options->json;
+    output.junit = options->junit;
+    output.planned = results.size();
+    if (incomplete)
+      output.incompleteBecause =
+          "merged from a shard that was interrupted: its cases not reached "
+          "are missing";
+    return reportResults(results, expectations, {}, output);
   };
 }
 

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <system_error>
+
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -17,12 +19,24 @@ fs::path identity(const fs::path& path) {
   return error ? fs::absolute(path).lexically_normal() : canonical;
 }
 
+// The file's type, following links; a path the system cannot look up (too
+// long, a loop of links, a folder that cannot be searched) is the user's
+// to fix, named with its option, not an internal error.
+fs::file_type typeOf(const OutputPath& output, const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error && error != std::errc::no_such_file_or_directory && error != std::errc::not_a_directory)
+    throw UsageError(fmt::format("{} {}: {} ({}); name another path", output.option,
+                                 output.path.string(), error.message(), path.string()));
+  return status.type();
+}
+
 void checkFile(const OutputPath& file) {
-  if (fs::is_directory(file.path))
+  if (typeOf(file, file.path) == fs::file_type::directory)
     throw UsageError(
         fmt::format("{} {}: is a folder; name a file to write", file.option, file.path.string()));
   const fs::path folder = fs::absolute(file.path).parent_path();
-  if (!fs::is_directory(folder))
+  if (typeOf(file, folder) != fs::file_type::directory)
     throw UsageError(
         fmt::format("{} {}: folder {} does not exist; create it or name a file in "
                     "an existing folder",
@@ -35,13 +49,25 @@ void checkFile(const OutputPath& file) {
 }
 
 void checkFolder(const OutputPath& folder) {
-  // A folder that does not exist yet is made by the command, with its parents.
-  fs::path existing = fs::absolute(folder.path);
-  while (!existing.empty() && !fs::exists(existing) && existing != existing.root_path())
+  // A folder that does not exist yet is made by the command, with its
+  // parents: the nearest part of the path that exists (a link counts, even
+  // one that leads nowhere) must be a folder.
+  fs::path existing = fs::absolute(folder.path).lexically_normal();
+  for (;;) {
+    std::error_code error;
+    const bool present = fs::exists(fs::symlink_status(existing, error));
+    if (present || existing == existing.root_path() || !existing.has_parent_path()) break;
     existing = existing.parent_path();
-  if (!fs::is_directory(existing))
-    throw UsageError(fmt::format("{} {}: {} is a file, not a folder; name a folder", folder.option,
-                                 folder.path.string(), existing.string()));
+  }
+  if (typeOf(folder, existing) != fs::file_type::directory)
+    throw UsageError(fmt::format(
+        "{} {}: {} is {}, not a folder; name a folder", folder.option, folder.path.string(),
+        existing.string(), fs::is_symlink(existing) ? "a link to nothing or to a file" : "a file"));
+}
+
+std::string named(const OutputPath& output, const fs::path& id) {
+  return output.path == id ? output.path.string()
+                           : fmt::format("{} (that is {})", output.path.string(), id.string());
 }
 
 }  // namespace
@@ -67,16 +93,21 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
     const fs::path id = identity(files[i].path);
     for (std::size_t j = i + 1; j < files.size(); ++j)
       if (identity(files[j].path) == id)
+        throw UsageError(fmt::format(
+            "{} {} and {} {} are one file: one would overwrite the other; name two files",
+            files[i].option, named(files[i], id), files[j].option, named(files[j], id)));
+    for (const OutputPath& folder : folders)
+      if (identity(folder.path) == id)
         throw UsageError(
-            fmt::format("{} and {} both name {}: one would overwrite the other; "
-                        "name two files",
-                        files[i].option, files[j].option, files[i].path.string()));
+            fmt::format("{} {} and {} {} are one path: a file and a folder cannot "
+                        "both be written there; name two paths",
+                        files[i].option, named(files[i], id), folder.option, named(folder, id)));
     for (const OutputPath& input : inputs)
       if (identity(input.path) == id)
         throw UsageError(
             fmt::format("{} {} is also {}: writing it would destroy that input; "
                         "name another file",
-                        files[i].option, files[i].path.string(), input.option));
+                        files[i].option, named(files[i], id), input.option));
   }
 }
 

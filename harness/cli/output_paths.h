@@ -14,16 +14,18 @@ struct OutputPath {
   std::filesystem::path path;
 };
 
-// The files `run --json FILE` and `merge --json FILE` write: FILE, and
-// beside it FILE.partial, results.csv (FILE's extension replaced) and
-// FILE.timing.json.
+// The files `run --json FILE` writes: FILE, and beside it FILE.partial,
+// results.csv (FILE's extension replaced) and FILE.timing.json (`merge`
+// writes FILE and results.csv; the other two are checked for it as well,
+// which refuses nothing it could write).
 std::vector<OutputPath> resultsFileOutputs(const std::string& option,
                                            const std::filesystem::path& file);
 
 // Throws UsageError (exit 2) naming the option when:
 // - a file is a folder, or its folder does not exist or is not writable;
 // - a folder exists as something other than a folder;
-// - two outputs, or an output and an input, are the same file.
+// - two outputs, a file and a folder, or an output and an input, are the
+//   same path.
 void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
                   const std::vector<OutputPath>& inputs = {});
 

@@ -29,13 +29,11 @@ void printWorstSlack(const std::vector<CaseResult>& results) {
     if (checked[backend] > 0) fmt::print("{}: worst slack {:.3f}\n", backend, slack);
 }
 
-// A result's message as the last lines of a block: ending in a newline,
-// so what is printed next starts a line of its own.
+}  // namespace
+
 std::string asLines(const std::string& message) {
   return message.empty() || message.back() == '\n' ? message : message + "\n";
 }
-
-}  // namespace
 
 int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& expectations,
                   const std::vector<SkippedCase>& skipped, const ResultsOutput& output) {
@@ -44,7 +42,7 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
       output.interruptedBy
           ? fmt::format("interrupted by SIG{} after {} of {} results",
                         sigabbrev_np(output.interruptedBy), results.size(), output.planned)
-          : "";
+          : output.incompleteBecause;
   if (!output.json.empty())
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".csv"),
                         toResultsCsv(report));

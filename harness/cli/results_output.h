@@ -21,7 +21,14 @@ struct ResultsOutput {
   int workers = 0;
   double crossApiSeconds = 0;
   std::string oracleStore;  // where oracle results were kept; empty: nowhere
+  // `merge` of an interrupted shard: why the results are incomplete, for
+  // the JUnit notes (run says it from interruptedBy). Empty: complete.
+  std::string incompleteBecause;
 };
+
+// A result's message as the last lines of a block: ending in a newline, so
+// what is printed next starts a line of its own.
+std::string asLines(const std::string& message);
 
 // Returns the exit code: 130 when interrupted, 1 for an unexpected failure, else 0.
 int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& expectations,

@@ -37,7 +37,7 @@ Command addRunCommand(CLI::App& app) {
         suite.results, suite.expectations, suite.skipped,
         {options->json, *junit, suite.interruptedBy, suite.planned,
          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-         suite.workers, suite.crossApiSeconds, suite.oracleStore});
+         suite.workers, suite.crossApiSeconds, suite.oracleStore, ""});
   };
 }
 

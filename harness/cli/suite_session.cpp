@@ -291,8 +291,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   const std::optional<OracleStore> store =
       run.oracleStore.empty() ? std::nullopt
                               : std::optional<OracleStore>(OracleStore(run.oracleStore));
-  checkAcrossApis(casesWithoutCrossCheck(run.cases, run.results), options.out, run.results,
-                  store ? &*store : nullptr);
+  checkAcrossApis(run.cases, options.out, run.results, store ? &*store : nullptr);
   run.crossApiSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - crossApiStart).count();
   // The streamed file is in completion order; the kept one is in task order,

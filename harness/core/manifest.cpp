@@ -24,11 +24,6 @@ namespace fs = std::filesystem;
 // kept as a number, it would be cut to 32 bits and name another line.
 constexpr std::int64_t kMaxLine = std::numeric_limits<int>::max();
 
-bool idCharacter(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_' ||
-         c == '+';
-}
-
 class ManifestReader {
  public:
   explicit ManifestReader(fs::path path) : path_(std::move(path)) {}
@@ -487,6 +482,11 @@ bool CaseSpec::has(const std::string& check) const {
   return std::find(checks.begin(), checks.end(), check) != checks.end();
 }
 
+bool isListingIdCharacter(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_' ||
+         c == '+';
+}
+
 std::string listingIdProblem(const std::string& id) {
   const std::string form =
       "an id is one or more '/'-separated names of letters, digits, '.', '-', '_' and '+' "
@@ -503,7 +503,7 @@ std::string listingIdProblem(const std::string& id) {
       return fmt::format("id `{}` has a `{}` name, which would leave its folder; {}", id, name,
                          form);
     for (char c : name)
-      if (!idCharacter(c))
+      if (!isListingIdCharacter(c))
         return fmt::format("id `{}` holds {}; {}", id,
                            c == ' ' ? std::string("a space")
                            : std::isprint(static_cast<unsigned char>(c))

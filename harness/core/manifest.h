@@ -115,6 +115,8 @@ inline constexpr double kMaxCaseTimeoutSeconds = 86400.0;
 // expectations file name it: one or more '/'-separated names of letters,
 // digits, '.', '-', '_' and '+', none of them "." or "..".
 std::string listingIdProblem(const std::string& id);
+// A character an id's names may hold.
+bool isListingIdCharacter(char c);
 
 // Parses one manifest. Every problem is a UsageError of the form
 // "FILE:LINE: what is wrong; what to do".

@@ -427,9 +427,7 @@ image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
 std::string idName(const std::string& folder) {
   std::string name = folder;
   for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '-' && c != '_' &&
-        c != '+')
-      c = '-';
+    if (!isListingIdCharacter(c)) c = '-';
   return name;
 }
 
@@ -442,7 +440,9 @@ std::string defaultId(const fs::path& dir) {
 
 }  // namespace
 
-std::string draftManifest(const DraftRequest& request) {
+std::string draftManifest(const DraftRequest& request) { return draftOf(request).text; }
+
+Draft draftOf(const DraftRequest& request) {
   const fs::path& dir = request.dir;
   if (!fs::is_directory(dir))
     throw UsageError(fmt::format("{}: no such folder; snell init DIR reads the GLSL files in DIR",
@@ -489,11 +489,12 @@ std::string draftManifest(const DraftRequest& request) {
   uniformsSection(out, vertex, fragment);
   captureSection(out, request, vertex, fragment);
   casesSection(out, vertex, fragment.has_value());
-  return out.str();
+  // With a fragment stage the cases compare images (casesSection).
+  return {out.str(), fragment.has_value()};
 }
 
-fs::path writeDraftManifest(const DraftRequest& request, bool force) {
-  const std::string text = draftManifest(request);
+DraftWritten writeDraftManifest(const DraftRequest& request, bool force) {
+  const Draft draft = draftOf(request);
   const fs::path path = request.dir / "manifest.toml";
   if (fs::exists(path) && !force)
     throw UsageError(
@@ -501,12 +502,12 @@ fs::path writeDraftManifest(const DraftRequest& request, bool force) {
                     "to replace it",
                     path.string()));
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  file << text;
+  file << draft.text;
   file.close();
   if (!file)
     throw UsageError(
         fmt::format("{}: cannot be written; check the folder's permissions", path.string()));
-  return path;
+  return {path, draft.imageCases};
 }
 
 }  // namespace snell

@@ -32,8 +32,20 @@ struct DraftRequest {
 // candidate stage files, a stage without main(), or nothing to read back.
 std::string draftManifest(const DraftRequest& request);
 
-// Writes draftManifest() to dir/manifest.toml and returns its path; an
-// existing manifest is a UsageError unless `force`.
-std::filesystem::path writeDraftManifest(const DraftRequest& request, bool force);
+// The text, and whether its cases compare images (a fragment stage): a new
+// listing's image case needs its golden blessed before it runs.
+struct Draft {
+  std::string text;
+  bool imageCases = false;
+};
+Draft draftOf(const DraftRequest& request);
+
+// Writes the draft to dir/manifest.toml; an existing manifest is a
+// UsageError unless `force`.
+struct DraftWritten {
+  std::filesystem::path path;
+  bool imageCases = false;
+};
+DraftWritten writeDraftManifest(const DraftRequest& request, bool force);
 
 }  // namespace snell

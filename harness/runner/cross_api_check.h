@@ -12,9 +12,23 @@
 
 namespace snell {
 
-// Adds an "other-backend:A/B" comparison to both results of every pair of
-// backends that rendered an image case into `outDir`. With a store, the
-// images read and the comparisons are kept there (runner/oracle_store).
+// Two backends' results of one image case whose images are to be compared.
+struct BackendPair {
+  const Case* imageCase;
+  CaseResult* a;  // the backend whose name sorts first
+  CaseResult* b;
+};
+
+// The pairs not compared yet: both results within the spec (Pass or
+// QualityWarning: an image already off the reference is not compared again)
+// and no "other-backend:A/B" recorded on them, as after a run resumed or
+// shards merged, where some pairs were compared in a job of their own.
+std::vector<BackendPair> pendingBackendPairs(const std::vector<Case>& cases,
+                                             std::vector<CaseResult>& results);
+
+// Adds an "other-backend:A/B" comparison to both results of every pending
+// pair of backends that rendered an image case into `outDir`. With a store,
+// the images read and the comparisons are kept there (runner/oracle_store).
 void checkAcrossApis(const std::vector<Case>& cases, const std::filesystem::path& outDir,
                      std::vector<CaseResult>& results, const OracleStore* store = nullptr);
 

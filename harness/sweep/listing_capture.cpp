@@ -152,6 +152,7 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
     const bool hung = !child.stdoutClosed();
     const std::string how = child.finish(hung);
     captures[next].answered = false;
+    captures[next].timedOut = hung;
     captures[next].problem =
         hung
             ? fmt::format("no answer within {:.3g} s (hang, or --timeout too short)",

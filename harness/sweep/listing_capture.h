@@ -16,6 +16,7 @@ namespace snell::sweep {
 
 struct DrawCapture {
   bool answered = false;  // false: the child crashed or hung on this draw
+  bool timedOut = false;  // not answered within --timeout (a hang, or a limit set too short)
   std::string problem;    // how it ended, or the set-up error
   bool compiled = false;
   std::string log;                        // the compiler's, when it did not compile

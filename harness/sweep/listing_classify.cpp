@@ -338,7 +338,7 @@ std::vector<ListingBreak> classifyListingDraw(const ListingDrawView& draw,
                                  {}});
   };
   if (!backend.answered) {
-    whole("crash", backend.problem);
+    whole(backend.timedOut ? "timeout" : "crash", backend.problem);
     return classifier.breaks;
   }
   if (!backend.problem.empty()) {

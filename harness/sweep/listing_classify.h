@@ -75,6 +75,7 @@ struct ListingBackendView {
   std::string log;  // the compiler's, when it did not compile
   const std::vector<OracleVarying>* expected = nullptr;
   const std::vector<CapturedVarying>* observed = nullptr;
+  bool timedOut = false;  // not answered within --timeout: kind timeout, not crash
 };
 
 // Every break of one draw on one backend.

@@ -129,7 +129,7 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
       const PrecisionRules rules = options.rules.at(b);
       if (!expected.count(rules)) expected[rules] = oracleFor(draw, rules);
       backends.push_back({options.backends[b], c.answered, c.problem, c.compiled, c.log,
-                          &expected.at(rules), &c.varyings});
+                          &expected.at(rules), &c.varyings, c.timedOut});
     }
     auto append = [&](std::vector<ListingBreak> more) {
       result.breaks.insert(result.breaks.end(), std::make_move_iterator(more.begin()),

@@ -101,8 +101,9 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
 
 // The closed-form critical angle on an angle x eta map: sin(theta_c) = 1 / eta.
 std::vector<Curve> withCriticalAngle(std::vector<Curve> curves) {
-  curves.push_back({"critical angle, eta = 1/sin(theta)", "",
-                    "(x > 23.5 && x <= 90 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
+  curves.push_back(
+      {"critical angle, eta = 1/sin(theta)", "",
+       "(x > 23.5 && x <= 90 ? 1/sin(x*pi/180) : 1/0) with lines lw 1.5 lc rgb '#000000'"});
   return curves;
 }
 
@@ -208,8 +209,8 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       "set key outside right\n";
   addChart(batch, written, outDir, "sweep-refract-slack",
            angleAxis +
-               "set title 'refract(): slack (error / allowed error) against angle, eta 0.66 "
-               "and 1.5 (total internal reflection, the zero vector, at 0)'\n"
+               "set title 'refract(): slack (error / allowed error) against angle, eta 0.66, "
+               "1/1.5 and 1.5 where swept (total internal reflection, the zero vector, at 0)'\n"
                "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
            data.curves("slack/refract/", "with points ps 0.5"));
   addChart(batch, written, outDir, "sweep-reflect-slack",

@@ -68,17 +68,5 @@ TEST(MergeResults, OverlapAndUnknownCaseAreUsageErrors) {
   EXPECT_THROW(mergeResults({{"1.jsonl", {result("zz", "gl")}}}, catalog), UsageError);
 }
 
-TEST(MergeResults, CrossCheckPendingOnlyForImageCasesWithoutOne) {
-  const std::vector<Case> catalog = {imageCase("a", true), imageCase("b", false),
-                                     imageCase("c", true)};
-  std::vector<CaseResult> results = {result("a", "gl"), result("a", "vk"), result("c", "gl")};
-  ImageComparison other;
-  other.against = "other-backend:gl/vk";
-  results[0].images.push_back(other);
-  const std::vector<Case> pending = casesWithoutCrossCheck(catalog, results);
-  ASSERT_EQ(pending.size(), 1u);
-  EXPECT_EQ(pending[0].id, "c");
-}
-
 }  // namespace
 }  // namespace snell

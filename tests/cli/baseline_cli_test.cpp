@@ -268,13 +268,17 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
 
   // Merged, the records stay marked: the merge of an interrupted run is
   // no complete run.
-  const Outcome merged = snell(fmt::format("merge {} --shaders {} --json {}", json.string(),
-                                           shaders.string(), (scratch / "merged.jsonl").string()));
+  const Outcome merged = snell(
+      fmt::format("merge {} --shaders {} --json {} --junit {}", json.string(), shaders.string(),
+                  (scratch / "merged.jsonl").string(), (scratch / "merged.xml").string()));
   EXPECT_EQ(merged.code, 0) << merged.out;
   EXPECT_NE(merged.out.find("is an interrupted run"), std::string::npos) << merged.out;
   const auto mergedRecords = records(scratch / "merged.jsonl");
   ASSERT_EQ(mergedRecords.size(), 3u);
   for (const auto& r : mergedRecords) EXPECT_EQ(r["incomplete"], true) << r["case"];
+  EXPECT_NE(readText(scratch / "merged.xml").find("merged from a shard that was interrupted"),
+            std::string::npos)
+      << readText(scratch / "merged.xml");
 
   // The endless case alone runs on resume, with a short limit.
   const Outcome resumed = snell(fmt::format(

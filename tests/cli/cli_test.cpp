@@ -84,9 +84,11 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   const std::string run = "run --filter 'orange-book/14.1-fresnel/sweep' --backend gl";
   const std::string d = dir.string();
   for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
-           {fmt::format("--json {0}/r.jsonl --junit {0}/r.jsonl", d),
-            "--json and --junit both name"},
-           {fmt::format("--json {0}/r.csv", d), "--json (its results.csv) both name"},
+           {fmt::format("--json {0}/r.jsonl --junit {0}/r.jsonl", d), "are one file"},
+           {fmt::format("--json {0}/r.csv", d), "and --json (its results.csv)"},
+           {fmt::format("--json {0}/new --out {0}/new", d),
+            "a file and a folder cannot both be written there"},
+           {fmt::format("--json {0}/{1}.jsonl", d, std::string(300, 'x')), "File name too long"},
            {fmt::format("--json {0}/folder", d), "/folder: is a folder"},
            {fmt::format("--junit {0}/no-such/r.xml", d), "/no-such does not exist"},
            {fmt::format("--out {0}/file", d), "/file is a file, not a folder"}}) {
@@ -98,8 +100,14 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   }
   EXPECT_FALSE(fs::exists(dir / "r.jsonl"));
   EXPECT_FALSE(fs::exists(dir / "folder.partial"));
-  const Outcome report = snell(fmt::format("report /dev/null -o {}/file", d));
+  EXPECT_FALSE(fs::exists(dir / "new.partial"));
+  // The report's folder, given a results file it could report on.
+  ASSERT_EQ(snell(run + fmt::format(" --json {}/r.jsonl", d)).code, 0);
+  const Outcome report = snell(fmt::format("report {0}/r.jsonl -o {0}/file", d));
   EXPECT_EQ(report.code, 2) << report.out;
+  EXPECT_NE(report.out.find("-o " + d + "/file: " + d + "/file is a file, not a folder"),
+            std::string::npos)
+      << report.out;
   fs::remove_all(dir);
 }
 

@@ -115,6 +115,7 @@ TEST(CompareCli, AFileThatIsNoFinishedRunIsExit2) {
   fs::create_directories(folder);
   for (const auto& [other, expected] : std::vector<std::pair<std::string, std::string>>{
            {run.string() + "@nope", "holds no results of backend `nope` (it holds gl)"},
+           {run.string() + "@", "name a backend after the @"},
            {folder.string(), "is a folder"},
            {empty.string(), "holds no results"},
            {torn.string(), torn.string() + ":2: the last record is cut off"}}) {

@@ -138,27 +138,70 @@ TEST_F(GoldenCli, BlessTouchesOnlyTheCasesItRan) {
 
 // The same pixels blessed again leave the golden's files as they were:
 // encoded anew they would differ in their bytes (the EXR header's date, PNG
-// compression), and every bless would be a binary change to review.
-TEST_F(GoldenCli, BlessingTheSamePixelsAgainWritesNothing) {
-  ASSERT_EQ(snell("bless").code, 0);  // this machine's own image and metadata
-  const GoldenFiles files = goldenFiles(dir_ / "golden", kCase, "gl");
-  const auto bytes = [](const fs::path& path) {
+// compression), and every bless would be a binary change to review. The
+// files are copied first, as a fresh clone has them: without the mark by
+// which snell skips writing an image it wrote itself (core/written_mark.h).
+class GoldenBlessAgain : public GoldenCli {
+ protected:
+  void SetUp() override {
+    GoldenCli::SetUp();
+    ASSERT_EQ(snell("bless").code, 0);  // this machine's own image and metadata
+    files_ = goldenFiles(dir_ / "golden", kCase, "gl");
+    for (const fs::path& path : {files_.image, files_.preview, files_.metadata}) {
+      const fs::path copy = dir_ / "copy";
+      fs::copy_file(path, copy);
+      fs::remove(path);
+      fs::rename(copy, path);
+    }
+  }
+
+  static std::string bytes(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  struct Snapshot {
+    std::string bytes;
+    fs::file_time_type time;
   };
-  std::vector<std::pair<std::string, fs::file_time_type>> before;
-  for (const fs::path& path : {files.image, files.preview, files.metadata})
-    before.push_back({bytes(path), fs::last_write_time(path)});
+  static Snapshot snapshot(const fs::path& path) {
+    return {bytes(path), fs::last_write_time(path)};
+  }
+  static void expectUntouched(const fs::path& path, const Snapshot& before) {
+    EXPECT_EQ(bytes(path), before.bytes) << path;
+    EXPECT_EQ(fs::last_write_time(path), before.time) << path;
+  }
+
+  GoldenFiles files_;
+};
+
+TEST_F(GoldenBlessAgain, TheSamePixelsWriteNothing) {
+  const Snapshot image = snapshot(files_.image), preview = snapshot(files_.preview),
+                 metadata = snapshot(files_.metadata);
   const Outcome o = snell("bless");
   EXPECT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("blessed (unchanged, files left as they were)"), std::string::npos)
       << o.output;
-  std::size_t k = 0;
-  for (const fs::path& path : {files.image, files.preview, files.metadata}) {
-    EXPECT_EQ(bytes(path), before[k].first) << path;
-    EXPECT_EQ(fs::last_write_time(path), before[k].second) << path;
-    ++k;
-  }
+  expectUntouched(files_.image, image);
+  expectUntouched(files_.preview, preview);
+  expectUntouched(files_.metadata, metadata);
+}
+
+// A changed tolerance rewrites the metadata alone; a lost preview is
+// written again beside the kept image.
+TEST_F(GoldenBlessAgain, OnlyWhatChangedOrIsMissingIsWritten) {
+  const fs::path manifest = dir_ / "shaders" / "fresnel" / "manifest.toml";
+  std::string text = bytes(manifest);
+  text.replace(text.find("warn = 0.002"), 12, "warn = 0.0025");
+  std::ofstream(manifest, std::ios::trunc) << text;
+  fs::remove(files_.preview);
+  const Snapshot image = snapshot(files_.image);
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("blessed (unchanged pixels, metadata rewritten"), std::string::npos)
+      << o.output;
+  expectUntouched(files_.image, image);
+  EXPECT_TRUE(fs::is_regular_file(files_.preview));
+  EXPECT_EQ(nlohmann::json::parse(bytes(files_.metadata))["tolerance"]["warn"], 0.0025);
 }
 
 TEST_F(GoldenCli, BlessRefusesAnImageThatIsOffTheReference) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include "core/case.h"
 #include "core/errors.h"
@@ -229,14 +230,16 @@ TEST_F(ManifestTest, NumbersOutOfTheirRangeNameTheirLine) {
                                 "image = { fail = 0.004, warn = 0.002, failpercent = 0.0, "
                                 "hardfail = 0.05 }\n";
   EXPECT_EQ(loadManifest(write(withImage)).cases[0].image.fail, 0.004);
-  for (const auto& [from, to] : std::vector<std::pair<std::string, std::string>>{
-           {"fail = 0.004", "fail = nan"},
-           {"warn = 0.002", "warn = inf"},
-           {"failpercent = 0.0", "failpercent = 250.0"}}) {
+  for (const auto& [from, to, expected] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"fail = 0.004", "fail = nan", "`image.fail` must be a finite number"},
+           {"warn = 0.002", "warn = inf", "`image.warn` must be a finite number"},
+           {"failpercent = 0.0", "failpercent = 250.0", "`image.failpercent` is a percentage"}}) {
     std::string text = withImage;
     text.replace(text.find(from), from.size(), to);
     const std::string message = errorOf(text);
-    EXPECT_NE(message.find("manifest.toml:19:"), std::string::npos) << to << ": " << message;
+    EXPECT_NE(message.find("manifest.toml:19: " + expected), std::string::npos)
+        << to << ": " << message;
   }
   for (const char* timeout : {"timeout = 1e300", "timeout = nan", "timeout = 0"}) {
     const std::string message = errorOf(std::string(timeout) + "\n" + kValid);

@@ -102,5 +102,33 @@ TEST_F(CrossApi, EveryPairOfBackendsIsCompared) {
   EXPECT_EQ(results[0].message.find("gl and vk differ"), std::string::npos) << results[0].message;
 }
 
+// Shards merged: gl and vk ran in one job and were compared there;
+// gl:softpipe ran in another. Only its two pairs are pending, and the gl/vk
+// comparison is not made a second time.
+TEST_F(CrossApi, APairComparedInItsOwnJobIsNotComparedAgain) {
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
+  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl:softpipe"), gl_);
+  std::vector<CaseResult> results(3);
+  for (CaseResult& r : results) r.caseId = "a/sphere";
+  results[0].backend = "gl";
+  results[1].backend = "gl:softpipe";
+  results[2].backend = "vk";
+  ImageComparison done;
+  done.against = "other-backend:gl/vk";
+  results[0].images.push_back(done);
+  results[2].images.push_back(done);
+  const std::vector<BackendPair> pending = pendingBackendPairs(cases_, results);
+  ASSERT_EQ(pending.size(), 2u);
+  EXPECT_EQ(pending[0].a->backend + "/" + pending[0].b->backend, "gl/gl:softpipe");
+  EXPECT_EQ(pending[1].a->backend + "/" + pending[1].b->backend, "gl:softpipe/vk");
+  checkAcrossApis(cases_, out_, results);
+  for (const CaseResult& r : results) {
+    ASSERT_EQ(r.images.size(), 2u) << r.backend;
+    EXPECT_EQ(r.status, Status::Pass) << r.backend;
+  }
+  EXPECT_TRUE(pendingBackendPairs(cases_, results).empty());
+}
+
 }  // namespace
 }  // namespace snell

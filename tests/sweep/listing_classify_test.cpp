@@ -60,7 +60,7 @@ TEST(ListingClassify, ACleanRisingWeightHasNoBreak) {
   Fixture f;
   const std::vector<OracleVarying> expected = {weightOracle({0.04, 0.05, 0.09})};
   const std::vector<CapturedVarying> observed = {captured("Ratio", 1, {0.04f, 0.05f, 0.09f})};
-  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed};
+  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed, false};
   EXPECT_TRUE(classifyListingDraw(f.view(), gl).empty());
 }
 
@@ -68,7 +68,7 @@ TEST(ListingClassify, AWeightOverOneTheListingComputesIsTheMethods) {
   Fixture f;
   const std::vector<OracleVarying> expected = {weightOracle({1.5, 1.4, 1.2})};
   const std::vector<CapturedVarying> observed = {captured("Ratio", 1, {1.5f, 1.4f, 1.2f})};
-  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed};
+  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed, false};
   const std::vector<ListingBreak> breaks = classifyListingDraw(f.view(), gl);
   EXPECT_TRUE(has(breaks, "weight_above_one_energy_grows", BreakClass::Method));
   EXPECT_TRUE(has(breaks, "weight_falls_toward_grazing", BreakClass::Method));
@@ -79,7 +79,7 @@ TEST(ListingClassify, AWeightOnlyTheBackendGetsWrongIsTheImplementations) {
   Fixture f;
   const std::vector<OracleVarying> expected = {weightOracle({0.04, 0.05, 0.09})};
   const std::vector<CapturedVarying> observed = {captured("Ratio", 1, {0.04f, 1.25f, 0.09f})};
-  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed};
+  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed, false};
   const std::vector<ListingBreak> breaks = classifyListingDraw(f.view(), gl);
   EXPECT_TRUE(has(breaks, "outside_spec", BreakClass::Implementation));
   EXPECT_TRUE(has(breaks, "weight_above_one_energy_grows", BreakClass::Implementation));
@@ -112,7 +112,7 @@ TEST(ListingClassify, ARefractedRayOnTheIncidentSideIsFlagged) {
   }
   std::vector<OracleVarying> expected = {v};
   std::vector<CapturedVarying> observed = {captured("Refract", 3, wrong)};
-  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed};
+  const ListingBackendView gl{"gl", true, "", true, "", &expected, &observed, false};
   const ListingDrawView view{"test/listing", "unit", 1 / 1.5, &f.points, {}};
   std::vector<ListingBreak> breaks = classifyListingDraw(view, gl);
   EXPECT_TRUE(has(breaks, "refracted_wrong_side", BreakClass::Implementation));
@@ -133,8 +133,8 @@ TEST(ListingClassify, BackendsThatDisagreeOutsideTheSpec) {
   const std::vector<OracleVarying> expected = {weightOracle({0.04, 0.05, 0.09})};
   const std::vector<CapturedVarying> good = {captured("Ratio", 1, {0.04f, 0.05f, 0.09f})};
   const std::vector<CapturedVarying> bad = {captured("Ratio", 1, {0.04f, 0.06f, 0.09f})};
-  const ListingBackendView gl{"gl", true, "", true, "", &expected, &good};
-  const ListingBackendView vk{"vk", true, "", true, "", &expected, &bad};
+  const ListingBackendView gl{"gl", true, "", true, "", &expected, &good, false};
+  const ListingBackendView vk{"vk", true, "", true, "", &expected, &bad, false};
   const std::vector<ListingBreak> breaks = listingDisagreements(f.view(), gl, vk);
   ASSERT_EQ(breaks.size(), 1u);
   EXPECT_EQ(breaks[0].cls, BreakClass::Implementation);
@@ -164,10 +164,17 @@ TEST(ListingClassify, AColourTheSpecNoLongerBoundsNearDotNHZeroIsAMethodBreak) {
 
 TEST(ListingClassify, ACrashedDrawIsOneCrashBreak) {
   Fixture f;
-  const ListingBackendView vk{"vk", false, "killed by signal 11", true, "", nullptr, nullptr};
+  const ListingBackendView vk{"vk",    false, "killed by signal 11", true, "", nullptr,
+                              nullptr, false};
   const std::vector<ListingBreak> breaks = classifyListingDraw(f.view(), vk);
   ASSERT_EQ(breaks.size(), 1u);
   EXPECT_EQ(breaks[0].kind, "crash");
+  // Cut off at --timeout, the draw did not crash.
+  const ListingBackendView slow{"vk",    false, "no answer within 0.001 s", true, "", nullptr,
+                                nullptr, true};
+  const std::vector<ListingBreak> cut = classifyListingDraw(f.view(), slow);
+  ASSERT_EQ(cut.size(), 1u);
+  EXPECT_EQ(cut[0].kind, "timeout");
 }
 
 TEST(ListingClassify, FindsTheZeroVectorsSwitchAtTheCriticalAngle) {
