@@ -44,6 +44,19 @@ class CrossApi : public ::testing::Test {
     return results;
   }
 
+  // gl, gl:softpipe (drawing `softpipe`) and vk, their images written.
+  std::vector<CaseResult> threeBackends(const Image& softpipe) {
+    writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
+    writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
+    writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl:softpipe"), softpipe);
+    std::vector<CaseResult> results(3);
+    for (CaseResult& r : results) r.caseId = "a/sphere";
+    results[0].backend = "gl";
+    results[1].backend = "gl:softpipe";
+    results[2].backend = "vk";
+    return results;
+  }
+
   fs::path out_;
   Manifest manifest_;
   CaseSpec spec_;
@@ -82,16 +95,9 @@ TEST_F(CrossApi, AMissingImageIsReportedNotIgnored) {
 // Three backends make three pairs: each result is held against the two
 // others, and only the pairs with the odd image out warn.
 TEST_F(CrossApi, EveryPairOfBackendsIsCompared) {
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
   Image odd = gl_;
   odd.pixels[0] = 0.9f;
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl:softpipe"), odd);
-  std::vector<CaseResult> results(3);
-  for (CaseResult& r : results) r.caseId = "a/sphere";
-  results[0].backend = "gl";
-  results[1].backend = "gl:softpipe";
-  results[2].backend = "vk";
+  std::vector<CaseResult> results = threeBackends(odd);
   checkAcrossApis(cases_, out_, results);
   for (const CaseResult& r : results) ASSERT_EQ(r.images.size(), 2u) << r.backend;
   EXPECT_EQ(results[0].status, Status::CompatibilityWarning);  // against gl:softpipe
@@ -106,14 +112,7 @@ TEST_F(CrossApi, EveryPairOfBackendsIsCompared) {
 // gl:softpipe ran in another. Only its two pairs are pending, and the gl/vk
 // comparison is not made a second time.
 TEST_F(CrossApi, APairComparedInItsOwnJobIsNotComparedAgain) {
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl"), gl_);
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "vk"), vk_);
-  writeImageAtomically(renderedImagePath(out_, "a/sphere", "gl:softpipe"), gl_);
-  std::vector<CaseResult> results(3);
-  for (CaseResult& r : results) r.caseId = "a/sphere";
-  results[0].backend = "gl";
-  results[1].backend = "gl:softpipe";
-  results[2].backend = "vk";
+  std::vector<CaseResult> results = threeBackends(gl_);
   ImageComparison done;
   done.against = "other-backend:gl/vk";
   results[0].images.push_back(done);
