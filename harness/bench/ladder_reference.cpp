@@ -91,7 +91,8 @@ LadderReference::LadderReference(const std::vector<Manifest>& methods, const Sce
   if (!glass)
     throw UsageError(fmt::format(
         "{}: a dispersion ladder needs a method that names its glass (Sellmeier terms B1..B4, "
-        "C1..C4 in `constants`)",
+        "C1..C4 in `constants`); --methods takes a ladder of methods of one effect, as "
+        "shaders/methods/fresnel, dispersion and refraction are",
         methods.front().path.parent_path().parent_path().string()));
   model_ =
       fmt::format("{}, {} wavelengths: {}", glass->name, wavelengths, kDispersionReferenceModel);

@@ -6,6 +6,7 @@
 #include "bench/bench_chart.h"
 #include "bench/bench_record.h"
 #include "cli/commands.h"
+#include "core/errors.h"
 
 namespace snell::cli {
 namespace {
@@ -48,16 +49,24 @@ Command addAdviseCommand(CLI::App& app) {
       ->add_option("--budget", options->budget, "The largest error allowed, in the metric's units")
       ->required();
   advise->add_option("--metric", options->metric, "rms, max, de_mean (default) or de_p95");
-  advise->add_option("--ladder", options->ladder,
-                     "The method ladder: fresnel (default), dispersion or refraction; its results "
-                     "are read from " +
-                         defaultBenchDir() + "/LADDER/bench.json");
+  CLI::Option* ladder = advise->add_option(
+      "--ladder", options->ladder,
+      "The method ladder: fresnel (default), dispersion, refraction or a ladder of your own; its "
+      "results are read from " +
+          defaultBenchDir() + "/LADDER/bench.json");
   advise->add_option("--results", options->results,
                      "A `snell bench` bench.json (in place of the ladder's default)");
   advise->add_option("--backend", options->backend, "Only this backend (default: each measured)");
   advise->add_flag("--json", options->json, "One JSON object on standard output, for scripts");
   advise->footer("Exit code 0 when every backend has a method within budget, 1 when one has none.");
-  return [options] {
+  return [options, ladder] {
+    // --results replaces the ladder's file: both given, one would be
+    // passed over (advice on Fresnel methods asked for dispersion).
+    if (ladder->count() > 0 && !options->results.empty())
+      throw UsageError(
+          fmt::format("--ladder {} and --results {} both say which results to read: "
+                      "give one",
+                      options->ladder, options->results));
     const bench::BenchResults results = bench::readBenchResults(
         options->results.empty() ? defaultBenchDir() + "/" + options->ladder + "/bench.json"
                                  : options->results);

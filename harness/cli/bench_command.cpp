@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <system_error>
 
 #include "bench/ablation.h"
 #include "bench/angle_chart.h"
@@ -35,10 +36,20 @@ bool isLadder(const std::filesystem::path& dir) {
 // the line naming what it wrote.
 std::string benchLadder(bench::BenchOptions run, const std::filesystem::path& out,
                         const std::string& metric) {
+  // A ladder that fails to run leaves no empty folder behind that it made.
+  const bool existed = std::filesystem::exists(out);
   std::filesystem::create_directories(out / "images");
   run.imagesDir = out / "images";
-  const bench::BenchResults results =
-      bench::runBench(run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
+  const bench::BenchResults results = [&] {
+    try {
+      return bench::runBench(run,
+                             [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
+    } catch (...) {
+      std::error_code ignored;
+      if (!existed) std::filesystem::remove_all(out, ignored);
+      throw;
+    }
+  }();
   bench::writeBenchResults(results, out / "bench.json");
   fmt::print("{}", bench::benchTable(results, metric));
   bench::drawParetoChart(results, metric, out);

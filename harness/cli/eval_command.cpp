@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "backends/backend.h"
+#include "backends/backend_registry.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "cli/eval_setup.h"
@@ -154,13 +155,27 @@ Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on ev
 (SNELL_EVAL_THREADS); the answers do not depend on either. On vk the compiled probe programs
 are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), else
 ~/.cache/snell/oracle.)");
-  return [options] {
+  return [options, eval] {
     // Standard input read through C stdio, one character per call, was the
     // largest cost after start-up in a profile of a million lines; this
     // command writes only through iostreams (stdout) and fmt (stderr).
     std::ios::sync_with_stdio(false);
     if (!options->socket.empty() && !options->server)
       throw UsageError("--socket names a server's socket: give it with --server");
+    // Options that would be passed over without a word are refused.
+    if (options->backend == "oracle" && (eval->count("--device") || eval->count("--gl-provider")))
+      throw UsageError(
+          "--device and --gl-provider choose a driver, and --backend oracle has none: name a "
+          "backend, or drop them");
+    if (options->backend != "oracle" && eval->count("--rules")) {
+      const std::string own =
+          backendRegistry().find(options->backend).family == "vk" ? "vulkan" : "glsl";
+      if (options->rules != own)
+        throw UsageError(fmt::format(
+            "--rules {}: a {} driver is judged by its own API's rules ({}); drop --rules, or "
+            "use --backend oracle --rules {}",
+            options->rules, options->backend, own, options->rules));
+    }
     if (options->server) return askServer(*options);
     std::ifstream file;
     std::istream* in = &std::cin;

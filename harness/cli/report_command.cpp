@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <system_error>
 
 #include "baseline/results_file.h"
 #include "cli/commands.h"
@@ -50,7 +52,17 @@ Command addReportCommand(CLI::App& app) {
     report.catalog = expandCases(manifests, "");
     report.sweepDir = options->sweep;
     report.title = fmt::format("{}", fmt::join(options->results, ", "));
-    const ReportStats stats = writeHtmlReport(runs, report, options->out);
+    // A report that fails leaves no folder behind that it made itself.
+    const bool existed = std::filesystem::exists(options->out);
+    const ReportStats stats = [&] {
+      try {
+        return writeHtmlReport(runs, report, options->out);
+      } catch (...) {
+        std::error_code ignored;
+        if (!existed) std::filesystem::remove_all(options->out, ignored);
+        throw;
+      }
+    }();
     const bool imageCases = std::any_of(runs.begin(), runs.end(), [](const ReportRun& run) {
       return std::any_of(run.results.begin(), run.results.end(),
                          [](const CaseResult& r) { return !r.images.empty(); });

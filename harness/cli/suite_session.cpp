@@ -1,6 +1,7 @@
 #include "cli/suite_session.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -169,6 +170,15 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   }
   validated.get();
   if (backendError) std::rethrow_exception(backendError);
+  // The validation layer is Vulkan's: asked for on a run with no Vulkan
+  // backend, it would check nothing, which is said rather than passed over.
+  if (options.validation && std::none_of(backends.begin(), backends.end(), [](const auto& name) {
+        return backendRegistry().find(name).family == "vk";
+      }))
+    fmt::print(stderr,
+               "snell: note: --validation checks Vulkan backends only, and this run has none "
+               "({})\n",
+               fmt::join(backends, ", "));
   if (std::any_of(run.cases.begin(), run.cases.end(),
                   [](const Case& c) { return c.spec.has("image"); }))
     requireImageLibraryFile();

@@ -113,7 +113,10 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
 
 // Values CLI11 lets through that would run something meaningless: nan for
 // a time or a factor (every range check is false for it), a backend named
-// twice (every case twice, two records under one key), a sweep of nothing.
+// twice (every case twice, two records under one key), a sweep of nothing;
+// and options that would be passed over without a word (a driver's device
+// for the oracle, rules a driver is not judged by, a ladder beside the
+// results file that replaces its own).
 TEST(Cli, OptionsThatMeanNothingAreExit2) {
   for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
            {"run --timeout nan", "not nan"},
@@ -121,11 +124,27 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"compare --drift nan a b", "not nan"},
            {"run --backend gl,gl", "`gl` is named twice"},
            {"sweep --listings 'no-such-listing*'", "no listing matches --listings"},
-           {"sweep --no-builtins --listings ''", "nothing to sweep"}}) {
+           {"sweep --no-builtins --listings ''", "nothing to sweep"},
+           {"eval --backend oracle --device 0 -", "--backend oracle has none"},
+           {"eval --backend gl --rules vulkan -", "a gl driver is judged by its own API's rules"},
+           {"advise --ladder dispersion --scene sphere --budget 1 --results " SNELL_SOURCE_ROOT
+            "/docs/bench/fresnel/bench.json",
+            "both say which results to read"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
   }
+}
+
+// The validation layer is Vulkan's: on a run without Vulkan it checks
+// nothing, and says so.
+TEST(Cli, ValidationWithoutVulkanIsNoted) {
+  const Outcome o =
+      snell("run --filter 'orange-book/14.1-fresnel/sweep' --backend gl --validation");
+  EXPECT_EQ(o.code, 0) << o.out;
+  EXPECT_NE(o.out.find("--validation checks Vulkan backends only, and this run has none (gl)"),
+            std::string::npos)
+      << o.out;
 }
 
 TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
