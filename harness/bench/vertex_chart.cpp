@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -25,6 +26,13 @@ std::string plotCommands(const BenchResults& results, const std::filesystem::pat
       terminal, output, backends.size(),
       results.records.empty() ? std::string("no") : ladderName(results.records.front().method),
       results.scene, width);
+  // One time axis for every panel: side by side, panels on scales of their
+  // own invite reading one backend's bars against the other's.
+  double top = 0;
+  for (const BenchRecord& r : results.records)
+    for (const TessellationTiming& t : r.byTessellation)
+      top = std::max({top, t.timing.p90Ms, t.timing.medianMs});
+  out += fmt::format("set yrange [0:{}]\n", top > 0 ? top * 1.05 : 1.0);
   for (const std::string& backend : backends) {
     std::string series;
     int colour = 1;

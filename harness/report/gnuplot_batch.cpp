@@ -11,9 +11,8 @@
 
 namespace snell {
 
-GnuplotBatch::GnuplotBatch(std::filesystem::path workDir) : dir_(std::move(workDir)) {
-  script_ = "set encoding utf8\n";
-}
+GnuplotBatch::GnuplotBatch(std::filesystem::path workDir)
+    : dir_(std::move(workDir)), script_("set encoding utf8\n") {}
 
 std::filesystem::path GnuplotBatch::file(const std::string& stem, const std::string& extension) {
   return dir_ / fmt::format("{}{}{}", stem, files_++, extension);

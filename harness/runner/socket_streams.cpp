@@ -54,7 +54,8 @@ SocketOutput::SocketOutput(int fd, const volatile std::sig_atomic_t* stop,
   setp(buffer_.data(), buffer_.data() + buffer_.size());
 }
 
-SocketOutput::~SocketOutput() { sync(); }
+// This class's own sync (a virtual call in a destructor binds statically).
+SocketOutput::~SocketOutput() { SocketOutput::sync(); }
 
 bool SocketOutput::sendAll(const char* data, std::size_t size) {
   // A signal stops only a write that waits: what the socket takes at once

@@ -58,10 +58,13 @@ class ChartData {
 };
 
 // A curve whose file is empty plots its style as a gnuplot expression.
-// Point types cycle (open circle, cross, filled circle, ...) so backends
-// that break at the same points stay visible on top of each other.
+// Point types cycle (open circle, cross, filled circle, ...) and shrink
+// along the series, so backends that break at the same points show as
+// nested marks (a ring, a cross inside it, a dot inside that) instead of
+// the last one drawn alone.
 std::string plotCommands(const std::vector<Curve>& curves) {
   static const int kPointTypes[] = {6, 2, 7, 4, 1, 8};
+  static const double kPointSizes[] = {0.8, 0.6, 0.35, 0.7, 0.5, 0.3};
   std::string plot = "plot ";
   for (std::size_t k = 0; k < curves.size(); ++k) {
     plot += k ? ", " : "";
@@ -70,7 +73,7 @@ std::string plotCommands(const std::vector<Curve>& curves) {
     else
       plot += fmt::format("'{}' using 1:2 {}{} title '{}'", curves[k].file, curves[k].style,
                           curves[k].style.find("points") != std::string::npos
-                              ? fmt::format(" pt {}", kPointTypes[k % 6])
+                              ? fmt::format(" pt {} ps {}", kPointTypes[k % 6], kPointSizes[k % 6])
                               : "",
                           curves[k].title);
   }
@@ -150,9 +153,8 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
     for (const auto& [classKind, rows] : curves) {
       const std::string file = fmt::format("sweep-data/{}-{}.dat", stem, n++);
       std::ofstream(outDir / file) << rows;
-      plotted.push_back(
-          {fmt::format("{} ({})", classKind.second, classKind.first), file,
-           fmt::format("with points ps 0.6 lc rgb '{}'", classColour(classKind.first))});
+      plotted.push_back({fmt::format("{} ({})", classKind.second, classKind.first), file,
+                         fmt::format("with points lc rgb '{}'", classColour(classKind.first))});
     }
     const std::string angles =
         backFaces[key] ? "set xrange [0:180]\nset xlabel 'incidence angle (degrees; past 90: "
@@ -212,7 +214,7 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
                "set title 'refract(): slack (error / allowed error) against angle, eta 0.66, "
                "1/1.5 and 1.5 where swept (total internal reflection, the zero vector, at 0)'\n"
                "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
-           data.curves("slack/refract/", "with points ps 0.5"));
+           data.curves("slack/refract/", "with points"));
   addChart(batch, written, outDir, "sweep-reflect-slack",
            angleAxis +
                fmt::format("set title 'reflect(): slack (error / allowed error) against angle{}'\n"
@@ -220,7 +222,7 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
                            // All 0 is a result: said, and the points kept off the axis line.
                            reflectWorst > 0 ? "" : " (every result exact: slack 0 throughout)",
                            reflectWorst > 0 ? "0:*" : "-0.05:1"),
-           data.curves("slack/reflect/", "with points ps 0.5"));
+           data.curves("slack/reflect/", "with points"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
                                    "(bound {})'\nset ylabel 'error'\n"
@@ -235,12 +237,12 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       "set key outside right\nset samples 1000\n";
   addChart(batch, written, outDir, "sweep-map-refract",
            mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
-           withCriticalAngle(data.curves("map/refract/", "with points ps 0.5")));
+           withCriticalAngle(data.curves("map/refract/", "with points")));
   addChart(batch, written, outDir, "sweep-map-methods",
            mapAxes + fmt::format("set title 'Fresnel methods: breaks against exact Fresnel "
                                  "(error bound {}, physical range)'\n",
                                  kMethodErrorBound),
-           withCriticalAngle(data.curves("map/method/", "with points ps 0.5")));
+           withCriticalAngle(data.curves("map/method/", "with points")));
   if (result.listingsSwept) addListingMaps(batch, written, outDir, result.listings, mapAxes);
   batch.run();
   return written;
