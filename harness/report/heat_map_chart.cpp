@@ -45,22 +45,31 @@ std::filesystem::path addHeatMap(GnuplotBatch& batch, const std::string& title,
              static_cast<std::streamsize>(errors.size() * sizeof(float)));
   const std::filesystem::path png = batch.file("heat", ".png");
   const double top = std::max(failThreshold * 10, summary.maxError);
+  // A few failing pixels are circled so they are found at a glance. Many
+  // rings (or dots) merge into one cyan area over the very errors they
+  // mark: past kRingedPixels none is drawn, and the fail threshold's mark
+  // on the colour scale, always there, says which colours are over it.
+  constexpr std::size_t kRingedPixels = 500;
+  const bool ringed = summary.overThreshold <= kRingedPixels;
+  const char* marker = summary.overThreshold <= 50 ? "pt 6 ps 1.6 lw 1.5" : "pt 6 ps 0.8 lw 1";
   std::string plot = fmt::format(
       "set terminal pngcairo size 440,360 font 'sans,9'\n"
       "set output '{}'\n"
-      "set title \"{}\\n{} pixels over {:g} (circled), largest {:.3g}\"\n"
+      "set title \"{}\\n{} pixels over {:g} ({}), largest {:.3g}\"\n"
       "unset key\nset size ratio -1\nunset xtics\nunset ytics\n"
       "set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n"
       "set logscale cb\nset cbrange [{:g}:{:g}]\nset format cb '%.0e'\n"
       "set cblabel 'largest channel error (log scale)'\n"
+      "set cbtics add ('fail' {:g})\n"
       "set palette rgb 34,35,36\n"
       "set object 1 rect from graph 0,0 to graph 1,1 behind fc rgb '#9a9a9a' fs solid noborder\n"
       "plot '{}' binary array=({},{}) format='%float' flipy with image",
-      png.filename().string(), title, summary.overThreshold, failThreshold, summary.maxError,
-      w - 0.5, h - 0.5, floor, top, data.filename().string(), w, h);
-  if (summary.overThreshold > 0)
-    plot += fmt::format(", '{}' using 1:2 with points pt 6 ps 1.6 lw 1.5 lc rgb '#00e5ff'",
-                        points.filename().string());
+      png.filename().string(), title, summary.overThreshold, failThreshold,
+      ringed ? "circled" : "too many to circle", summary.maxError, w - 0.5, h - 0.5, floor, top,
+      failThreshold, data.filename().string(), w, h);
+  if (summary.overThreshold > 0 && ringed)
+    plot += fmt::format(", '{}' using 1:2 with points {} lc rgb '#00e5ff'",
+                        points.filename().string(), marker);
   batch.add(plot);
   return png;
 }

@@ -1,9 +1,11 @@
 #pragma once
 // Heat maps a person can read: the largest channel difference per pixel on
 // a log colour scale from fail/1000 to above the fail threshold, with the
-// colour bar and its scale, masked pixels grey, and every pixel over the
-// threshold circled. A failure of a dozen pixels in a 256x256 image is a
-// handful of rings, where a linear map shows nothing.
+// colour bar and its scale (the fail threshold marked on it), masked pixels
+// grey, and every pixel over the threshold circled while there are at most
+// 500 of them. A failure of a dozen pixels in a 256x256 image is a handful
+// of rings, where a linear map shows nothing; past 500 the rings would
+// cover the errors they mark.
 #include <string>
 #include <vector>
 
