@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "runner/case_result_json.h"
 
@@ -58,7 +59,7 @@ std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& pat
     // Only a run's FILE.partial can be torn (the results file is renamed
     // into place whole): --resume finishes it into FILE.
     const std::string file = path.string();
-    const std::string partial = ".partial";
+    const std::string partial = kPartialSuffix;
     const bool isPartial = file.size() > partial.size() &&
                            file.compare(file.size() - partial.size(), partial.size(), partial) == 0;
     throw UsageError(fmt::format(

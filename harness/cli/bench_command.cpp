@@ -34,22 +34,12 @@ bool isLadder(const std::filesystem::path& dir) {
 
 // Measures one ladder into `out`: bench.json, its table, its charts; returns
 // the line naming what it wrote.
-std::string benchLadder(bench::BenchOptions run, const std::filesystem::path& out,
-                        const std::string& metric) {
-  // A ladder that fails to run leaves no empty folder behind that it made.
-  const bool existed = std::filesystem::exists(out);
+std::string measureLadder(bench::BenchOptions run, const std::filesystem::path& out,
+                          const std::string& metric) {
   std::filesystem::create_directories(out / "images");
   run.imagesDir = out / "images";
-  const bench::BenchResults results = [&] {
-    try {
-      return bench::runBench(run,
-                             [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
-    } catch (...) {
-      std::error_code ignored;
-      if (!existed) std::filesystem::remove_all(out, ignored);
-      throw;
-    }
-  }();
+  const bench::BenchResults results =
+      bench::runBench(run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
   bench::writeBenchResults(results, out / "bench.json");
   fmt::print("{}", bench::benchTable(results, metric));
   bench::drawParetoChart(results, metric, out);
@@ -74,6 +64,20 @@ std::string benchLadder(bench::BenchOptions run, const std::filesystem::path& ou
   }
   fmt::print("\n");
   return fmt::format("wrote {}/bench.json, {}\n", out.string(), charts);
+}
+
+// The same, leaving no folder behind that it made when it fails (an
+// earlier ladder's results in the same --out are kept).
+std::string benchLadder(const bench::BenchOptions& run, const std::filesystem::path& out,
+                        const std::string& metric) {
+  const std::filesystem::path made = firstMissingFolder(out);
+  try {
+    return measureLadder(run, out, metric);
+  } catch (...) {
+    std::error_code ignored;
+    if (!made.empty()) std::filesystem::remove_all(made, ignored);
+    throw;
+  }
 }
 
 }  // namespace

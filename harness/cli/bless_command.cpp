@@ -2,10 +2,13 @@
 // asked, only for the cases it ran, and only for images that are correct
 // (within the tolerance of the CPU reference): a wrong image is never blessed.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 #include "backends/backend_registry.h"
 #include "cli/commands.h"
@@ -56,10 +59,7 @@ GoldenChange changeOf(const fs::path& goldenDir, const Case& c, const std::strin
     const Golden old = readGolden(goldenDir, c.id, backend, image.width, image.height, "");
     const ImageComparison change = compareImages("golden", image, old.image, {}, c.spec.image);
     if (change.maxError == 0) {
-      const bool sameMetadata = old.metadata == metadata;
-      return {sameMetadata ? "unchanged, files left as they were"
-                           : "unchanged pixels, metadata rewritten (driver or tolerance)",
-              true, sameMetadata};
+      return {"unchanged, files left as they were", true, old.metadata == metadata};
     }
     return {fmt::format("changed: max error {:.6g} at ({}, {}), {} pixels over {}, {} over {}",
                         change.maxError, change.maxX, change.maxY, change.failed, c.spec.image.fail,
@@ -105,15 +105,25 @@ int bless(const SuiteOptions& options) {
     // differs in its bytes (a date in the EXR header, PNG compression), and
     // each bless would be a binary change to review in version control.
     const GoldenFiles files = goldenFiles(options.golden, r.caseId, key);
+    std::string description = change.description;
     if (!change.samePixels) {
       writeGolden(options.golden, r.caseId, key, image, metadata);
     } else {
       // The image kept; what is missing or stale beside it is written.
-      if (!fs::is_regular_file(files.preview)) writeImageAtomically(files.preview, image);
-      if (!change.sameMetadata) writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+      std::vector<std::string> rewritten;
+      if (!fs::is_regular_file(files.preview)) {
+        writeImageAtomically(files.preview, image);
+        rewritten.push_back("the lost preview written again");
+      }
+      if (!change.sameMetadata) {
+        writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+        rewritten.push_back("metadata rewritten (driver or tolerance)");
+      }
+      if (!rewritten.empty())
+        description = fmt::format("unchanged pixels, {}", fmt::join(rewritten, "; "));
     }
     written.insert({r.caseId, key});
-    fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, change.description);
+    fmt::print("{} {}: blessed ({})\n", r.backend, r.caseId, description);
   }
   return refused ? 1 : 0;
 }

@@ -5,6 +5,7 @@
 
 #include <system_error>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -36,11 +37,15 @@ void checkFile(const OutputPath& file) {
     throw UsageError(
         fmt::format("{} {}: is a folder; name a file to write", file.option, file.path.string()));
   const fs::path folder = fs::absolute(file.path).parent_path();
-  if (typeOf(file, folder) != fs::file_type::directory)
+  const fs::file_type folderType = typeOf(file, folder);
+  if (folderType == fs::file_type::not_found)
     throw UsageError(
         fmt::format("{} {}: folder {} does not exist; create it or name a file in "
                     "an existing folder",
                     file.option, file.path.string(), folder.string()));
+  if (folderType != fs::file_type::directory)
+    throw UsageError(fmt::format("{} {}: {} is a file, not a folder; name a file in a folder",
+                                 file.option, file.path.string(), folder.string()));
   if (access(folder.c_str(), W_OK | X_OK) != 0)
     throw UsageError(
         fmt::format("{} {}: folder {} is not writable; name a file in a writable "
@@ -56,6 +61,12 @@ void checkFolder(const OutputPath& folder) {
   for (;;) {
     std::error_code error;
     const bool present = fs::exists(fs::symlink_status(existing, error));
+    // A path the system cannot look up (too long, a loop of links) is
+    // named here, not found by the command after its work.
+    if (error && error != std::errc::no_such_file_or_directory &&
+        error != std::errc::not_a_directory)
+      throw UsageError(fmt::format("{} {}: {} ({}); name another path", folder.option,
+                                   folder.path.string(), error.message(), existing.string()));
     if (present || existing == existing.root_path() || !existing.has_parent_path()) break;
     existing = existing.parent_path();
   }
@@ -72,9 +83,20 @@ std::string named(const OutputPath& output, const fs::path& id) {
 
 }  // namespace
 
+fs::path firstMissingFolder(const fs::path& path) {
+  fs::path missing;
+  for (fs::path p = fs::absolute(path).lexically_normal();; p = p.parent_path()) {
+    std::error_code error;
+    if (fs::exists(fs::symlink_status(p, error))) break;
+    missing = p;
+    if (p == p.root_path() || !p.has_parent_path()) break;
+  }
+  return missing;
+}
+
 std::vector<OutputPath> resultsFileOutputs(const std::string& option, const fs::path& file) {
   fs::path partial = file;
-  partial += ".partial";
+  partial += kPartialSuffix;
   fs::path timing = file;
   timing.replace_extension(".timing.json");
   fs::path csv = file;

@@ -29,4 +29,9 @@ std::vector<OutputPath> resultsFileOutputs(const std::string& option,
 void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
                   const std::vector<OutputPath>& inputs = {});
 
+// The outermost folder of `path` that does not exist yet, or empty when all
+// of it does: what a command that makes `path` and then fails removes, so
+// that it leaves nothing behind that it made.
+std::filesystem::path firstMissingFolder(const std::filesystem::path& path);
+
 }  // namespace snell::cli

@@ -53,13 +53,13 @@ Command addReportCommand(CLI::App& app) {
     report.sweepDir = options->sweep;
     report.title = fmt::format("{}", fmt::join(options->results, ", "));
     // A report that fails leaves no folder behind that it made itself.
-    const bool existed = std::filesystem::exists(options->out);
+    const std::filesystem::path made = firstMissingFolder(options->out);
     const ReportStats stats = [&] {
       try {
         return writeHtmlReport(runs, report, options->out);
       } catch (...) {
         std::error_code ignored;
-        if (!existed) std::filesystem::remove_all(options->out, ignored);
+        if (!made.empty()) std::filesystem::remove_all(made, ignored);
         throw;
       }
     }();

@@ -11,7 +11,7 @@ namespace fs = std::filesystem;
 
 StreamingFile::StreamingFile(fs::path path) : path_(std::move(path)) {
   partial_ = path_;
-  partial_ += ".partial";
+  partial_ += kPartialSuffix;
   out_.open(partial_, std::ios::binary | std::ios::trunc);
   if (!out_)
     throw UsageError(fmt::format("{}: cannot write here; check the folder exists and is writable",

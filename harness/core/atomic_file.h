@@ -7,6 +7,9 @@
 
 namespace snell {
 
+// The suffix of a results file while its run streams records into it.
+inline constexpr const char* kPartialSuffix = ".partial";
+
 // Streams records to "<path>.partial" as they come (flushed after each, so a
 // crash keeps what was finished); finish() puts the final text at `path`
 // atomically and removes the partial file.

@@ -20,6 +20,7 @@
 #include "report/report_template.h"
 #include "report/slack_histogram_chart.h"
 #include "report/sweep_findings.h"
+#include "runner/cross_api_check.h"
 
 namespace snell {
 namespace {
@@ -426,8 +427,8 @@ class ReportBuilder {
       page.results.push_back(std::move(rp));
     }
     // Every pair of backends of the last run that rendered the case. The
-    // run gates only pairs whose images are within the spec (Pass or
-    // QualityWarning): a pair with one off the reference is drawn here
+    // run compares only pairs whose images are within the spec
+    // (renderedWithinSpec): a pair with one off the reference is drawn here
     // for a look, and its caption says it is no part of the verdict.
     std::vector<std::string> rendered;
     std::map<std::string, bool> withinSpec;
@@ -435,8 +436,7 @@ class ReportBuilder {
       if (columns_[column].run + 1 == runs_.size() &&
           image(dir / (columns_[column].backend + ".exr"))) {
         rendered.push_back(columns_[column].backend);
-        withinSpec[columns_[column].backend] =
-            r->status == Status::Pass || r->status == Status::QualityWarning;
+        withinSpec[columns_[column].backend] = renderedWithinSpec(r->status);
       }
     for (std::size_t a = 0; a < rendered.size(); ++a)
       for (std::size_t b = a + 1; b < rendered.size(); ++b) {

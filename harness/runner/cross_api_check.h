@@ -19,10 +19,14 @@ struct BackendPair {
   CaseResult* b;
 };
 
-// The pairs not compared yet: both results within the spec (Pass or
-// QualityWarning: an image already off the reference is not compared again)
-// and no "other-backend:A/B" recorded on them, as after a run resumed or
-// shards merged, where some pairs were compared in a job of their own.
+// Whether a result's image is one to hold against other backends': Pass,
+// QualityWarning or CompatibilityWarning (an image already off the
+// reference is not compared again).
+bool renderedWithinSpec(Status status);
+
+// The pairs not compared yet: both results rendered within the spec and no
+// "other-backend:A/B" recorded on them, as after a run resumed or shards
+// merged, where some pairs were compared in a job of their own.
 std::vector<BackendPair> pendingBackendPairs(const std::vector<Case>& cases,
                                              std::vector<CaseResult>& results);
 

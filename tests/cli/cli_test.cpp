@@ -88,7 +88,11 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
            {fmt::format("--json {0}/r.csv", d), "and --json (its results.csv)"},
            {fmt::format("--json {0}/new --out {0}/new", d),
             "a file and a folder cannot both be written there"},
-           {fmt::format("--json {0}/{1}.jsonl", d, std::string(300, 'x')), "File name too long"},
+           {fmt::format("--json {0}/{1}.jsonl", d, std::string(300, 'x')),
+            fmt::format("--json {}/{}.jsonl: File name too long", d, std::string(300, 'x'))},
+           {fmt::format("--out {0}/{1}/sub", d, std::string(300, 'x')),
+            fmt::format("--out {}/{}/sub: File name too long", d, std::string(300, 'x'))},
+           {fmt::format("--json {0}/file/r.jsonl", d), "/file is a file, not a folder"},
            {fmt::format("--json {0}/folder", d), "/folder: is a folder"},
            {fmt::format("--junit {0}/no-such/r.xml", d), "/no-such does not exist"},
            {fmt::format("--out {0}/file", d), "/file is a file, not a folder"}}) {
@@ -103,6 +107,15 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   EXPECT_FALSE(fs::exists(dir / "new.partial"));
   // The report's folder, given a results file it could report on.
   ASSERT_EQ(snell(run + fmt::format(" --json {}/r.jsonl", d)).code, 0);
+  // A command that fails after making its output folder leaves none of
+  // the folders it made.
+  const Outcome noSweep =
+      snell(fmt::format("report {0}/r.jsonl -o {0}/made/rep --sweep {0}/folder", d));
+  EXPECT_EQ(noSweep.code, 2) << noSweep.out;
+  EXPECT_FALSE(fs::exists(dir / "made")) << noSweep.out;
+  const Outcome badScene = snell(fmt::format("bench --scene nosuch --out {}/made/bench", d));
+  EXPECT_EQ(badScene.code, 2) << badScene.out;
+  EXPECT_FALSE(fs::exists(dir / "made")) << badScene.out;
   const Outcome report = snell(fmt::format("report {0}/r.jsonl -o {0}/file", d));
   EXPECT_EQ(report.code, 2) << report.out;
   EXPECT_NE(report.out.find("-o " + d + "/file: " + d + "/file is a file, not a folder"),

@@ -186,6 +186,20 @@ TEST_F(GoldenBlessAgain, TheSamePixelsWriteNothing) {
   expectUntouched(files_.metadata, metadata);
 }
 
+// A lost preview alone is written again, and said so.
+TEST_F(GoldenBlessAgain, ALostPreviewIsWrittenAgainAndSaidSo) {
+  fs::remove(files_.preview);
+  const Snapshot image = snapshot(files_.image), metadata = snapshot(files_.metadata);
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("blessed (unchanged pixels, the lost preview written again)"),
+            std::string::npos)
+      << o.output;
+  EXPECT_TRUE(fs::is_regular_file(files_.preview));
+  expectUntouched(files_.image, image);
+  expectUntouched(files_.metadata, metadata);
+}
+
 // A changed tolerance rewrites the metadata alone; a lost preview is
 // written again beside the kept image.
 TEST_F(GoldenBlessAgain, OnlyWhatChangedOrIsMissingIsWritten) {
@@ -197,7 +211,9 @@ TEST_F(GoldenBlessAgain, OnlyWhatChangedOrIsMissingIsWritten) {
   const Snapshot image = snapshot(files_.image);
   const Outcome o = snell("bless");
   EXPECT_EQ(o.code, 0) << o.output;
-  EXPECT_NE(o.output.find("blessed (unchanged pixels, metadata rewritten"), std::string::npos)
+  EXPECT_NE(o.output.find("blessed (unchanged pixels, the lost preview written again; metadata "
+                          "rewritten"),
+            std::string::npos)
       << o.output;
   expectUntouched(files_.image, image);
   EXPECT_TRUE(fs::is_regular_file(files_.preview));

@@ -129,5 +129,45 @@ TEST_F(CrossApi, APairComparedInItsOwnJobIsNotComparedAgain) {
   EXPECT_TRUE(pendingBackendPairs(cases_, results).empty());
 }
 
+// The same when gl and vk warned against each other in their shard: a
+// CompatibilityWarning (set by this check alone) is still an image within
+// the spec, held against the backend it has not met.
+TEST_F(CrossApi, AWarnedPairStillMeetsABackendFromAnotherShard) {
+  std::vector<CaseResult> results = threeBackends(gl_);
+  ImageComparison warned;
+  warned.against = "other-backend:gl/vk";
+  warned.verdict = ImageVerdict::Warn;
+  for (CaseResult* r : {&results[0], &results[2]}) {
+    r->images.push_back(warned);
+    r->status = Status::CompatibilityWarning;
+  }
+  const std::vector<BackendPair> pending = pendingBackendPairs(cases_, results);
+  ASSERT_EQ(pending.size(), 2u);
+  checkAcrossApis(cases_, out_, results);
+  EXPECT_EQ(results[1].images.size(), 2u);
+  EXPECT_EQ(results[1].status, Status::Pass);
+}
+
+// A pair recorded on one side only (one result re-run beside its partner's
+// kept one) gets the same comparison on the other, without a new one.
+TEST_F(CrossApi, AComparisonOnOneSideIsCopiedToTheOther) {
+  std::vector<CaseResult> results(2);
+  results[0].caseId = results[1].caseId = "a/sphere";
+  results[0].backend = "gl";
+  results[1].backend = "vk";
+  ImageComparison warned;
+  warned.against = "other-backend:gl/vk";
+  warned.verdict = ImageVerdict::Warn;
+  warned.maxError = 0.003;
+  results[0].images.push_back(warned);
+  results[0].status = Status::CompatibilityWarning;
+  checkAcrossApis(cases_, out_, results);  // no image written: none may be read
+  ASSERT_EQ(results[0].images.size(), 1u);
+  ASSERT_EQ(results[1].images.size(), 1u);
+  EXPECT_EQ(results[1].images[0].maxError, 0.003);
+  EXPECT_EQ(results[1].status, Status::CompatibilityWarning);
+  EXPECT_NE(results[1].message.find("gl and vk differ"), std::string::npos) << results[1].message;
+}
+
 }  // namespace
 }  // namespace snell
