@@ -2,32 +2,14 @@
 // (core/manifest_draft.h), for the author to finish and run.
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <cctype>
-#include <cstring>
-
 #include "cli/commands.h"
+#include "cli/shell_word.h"
 #include "core/errors.h"
 #include "core/manifest.h"
 #include "core/manifest_draft.h"
 #include "derived/lower_glsl.h"
 
 namespace snell::cli {
-namespace {
-
-// `text` as one word of a shell command: quoted when it holds anything but
-// letters, digits and / . _ - + : @ %.
-std::string shellWord(const std::string& text) {
-  const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("/._-+:@%", c);
-  });
-  if (plain) return text;
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-}  // namespace
 
 Command addInitCommand(CLI::App& app) {
   CLI::App* init = app.add_subcommand(

@@ -53,23 +53,45 @@ void checkFile(const OutputPath& file) {
                     file.option, file.path.string(), folder.string()));
 }
 
+// A folder path split where it stops existing: its nearest part that
+// exists (a link counts, even one that leads nowhere) and the outermost
+// part that does not (empty when all of it exists). A part the system
+// cannot look up (too long, a loop of links) stops the walk with its error.
+struct FolderParts {
+  fs::path existing;
+  fs::path firstMissing;
+  std::error_code error;
+};
+
+FolderParts folderParts(const fs::path& path) {
+  FolderParts parts;
+  for (fs::path p = fs::absolute(path).lexically_normal();; p = p.parent_path()) {
+    std::error_code error;
+    const bool present = fs::exists(fs::symlink_status(p, error));
+    if (error && error != std::errc::no_such_file_or_directory &&
+        error != std::errc::not_a_directory) {
+      parts.existing = p;
+      parts.error = error;
+      break;
+    }
+    if (present || p == p.root_path() || !p.has_parent_path()) {
+      parts.existing = p;
+      break;
+    }
+    parts.firstMissing = p;
+  }
+  return parts;
+}
+
 void checkFolder(const OutputPath& folder) {
   // A folder that does not exist yet is made by the command, with its
-  // parents: the nearest part of the path that exists (a link counts, even
-  // one that leads nowhere) must be a folder.
-  fs::path existing = fs::absolute(folder.path).lexically_normal();
-  for (;;) {
-    std::error_code error;
-    const bool present = fs::exists(fs::symlink_status(existing, error));
-    // A path the system cannot look up (too long, a loop of links) is
-    // named here, not found by the command after its work.
-    if (error && error != std::errc::no_such_file_or_directory &&
-        error != std::errc::not_a_directory)
-      throw UsageError(fmt::format("{} {}: {} ({}); name another path", folder.option,
-                                   folder.path.string(), error.message(), existing.string()));
-    if (present || existing == existing.root_path() || !existing.has_parent_path()) break;
-    existing = existing.parent_path();
-  }
+  // parents: the nearest part of the path that exists must be a folder.
+  const FolderParts parts = folderParts(folder.path);
+  const fs::path& existing = parts.existing;
+  // Named here, not found by the command after its work.
+  if (parts.error)
+    throw UsageError(fmt::format("{} {}: {} ({}); name another path", folder.option,
+                                 folder.path.string(), parts.error.message(), existing.string()));
   if (typeOf(folder, existing) != fs::file_type::directory)
     throw UsageError(fmt::format(
         "{} {}: {} is {}, not a folder; name a folder", folder.option, folder.path.string(),
@@ -83,16 +105,7 @@ std::string named(const OutputPath& output, const fs::path& id) {
 
 }  // namespace
 
-fs::path firstMissingFolder(const fs::path& path) {
-  fs::path missing;
-  for (fs::path p = fs::absolute(path).lexically_normal();; p = p.parent_path()) {
-    std::error_code error;
-    if (fs::exists(fs::symlink_status(p, error))) break;
-    missing = p;
-    if (p == p.root_path() || !p.has_parent_path()) break;
-  }
-  return missing;
-}
+fs::path firstMissingFolder(const fs::path& path) { return folderParts(path).firstMissing; }
 
 std::vector<OutputPath> resultsFileOutputs(const std::string& option, const fs::path& file) {
   fs::path partial = file;

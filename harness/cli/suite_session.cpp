@@ -21,6 +21,7 @@
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "cli/number_checks.h"
+#include "cli/shell_word.h"
 #include "compare/image_library.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -44,18 +45,6 @@ std::vector<std::string> workerBackendArgs(const SuiteOptions& options) {
   if (!options.glProvider.empty()) args.insert(args.end(), {"--gl-provider", options.glProvider});
   return args;
 }
-
-namespace {
-// Quoted for a POSIX shell only where it needs to be.
-std::string shellWord(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                              "0123456789_-./:=+,@") == std::string::npos)
-    return word;
-  std::string quoted = "'";
-  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-}  // namespace
 
 std::string userFolderFlags(const SuiteOptions& options) {
   std::string flags;
