@@ -24,6 +24,11 @@ struct BackendEntry {
   // Whether `--backend all` includes it when it comes up (a GPU-only backend
   // on a machine without one simply does not come up).
   bool inAll = true;
+  // Which driver options its `make` reads: `--device` (a device to pick)
+  // and `--gl-provider` (a context provider in place of its own). A command
+  // refuses either when no backend it runs reads it.
+  bool takesDevice = false;
+  bool takesGlProvider = false;
   std::function<std::unique_ptr<Backend>(const BackendEntry&, const BackendOptions&)> make;
 };
 

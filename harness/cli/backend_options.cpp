@@ -52,6 +52,44 @@ std::string backendListReason(const std::string& list, bool allowAll) {
   return "";
 }
 
+namespace {
+
+// "a", "a and b", "a, b and c".
+std::string spokenList(const std::vector<std::string>& items) {
+  if (items.size() < 2) return fmt::format("{}", fmt::join(items, ""));
+  return fmt::format("{} and {}", fmt::join(items.begin(), items.end() - 1, ", "), items.back());
+}
+
+std::string unreadReason(const std::vector<std::string>& names, const std::string& option,
+                         const std::string& value, const char* what, bool BackendEntry::*reads) {
+  std::vector<std::string> readers;
+  for (const BackendEntry& e : backendRegistry().entries())
+    if (e.*reads) readers.push_back(e.name);
+  for (const std::string& name : names)
+    if (backendRegistry().find(name).*reads) return "";
+  return fmt::format(
+      "{} {}: {} {} {} (only {} {}); drop {}, or run one of those", option, value,
+      names.size() == 1 ? names.front() : fmt::format("none of {}", fmt::join(names, ", ")),
+      names.size() == 1 ? "does not take" : "takes", what, spokenList(readers),
+      readers.size() == 1 ? "does" : "do", option);
+}
+
+}  // namespace
+
+std::string unreadDriverOptionReason(const std::vector<std::string>& names,
+                                     const std::string& device, const std::string& glProvider) {
+  if (names.empty() || (names.size() == 1 && names.front() == "all")) return "";
+  if (!device.empty())
+    if (std::string reason =
+            unreadReason(names, "--device", device, "a device", &BackendEntry::takesDevice);
+        !reason.empty())
+      return reason;
+  if (!glProvider.empty())
+    return unreadReason(names, "--gl-provider", glProvider, "an OpenGL context provider",
+                        &BackendEntry::takesGlProvider);
+  return "";
+}
+
 void addDriverOptions(CLI::App& sub, std::string& device, std::string& glProvider) {
   sub.add_option("--device", device,
                  "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "

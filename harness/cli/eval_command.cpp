@@ -167,6 +167,11 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
       throw UsageError(
           "--device and --gl-provider choose a driver, and --backend oracle has none: name a "
           "backend, or drop them");
+    if (options->backend != "oracle")
+      if (std::string reason =
+              unreadDriverOptionReason({options->backend}, options->device, options->glProvider);
+          !reason.empty())
+        throw UsageError(reason);
     if (options->backend != "oracle" && eval->count("--rules")) {
       const std::string own =
           backendRegistry().find(options->backend).family == "vk" ? "vulkan" : "glsl";

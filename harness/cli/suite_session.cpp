@@ -131,6 +131,10 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
 }
 
 SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compareGoldens) {
+  if (std::string reason = unreadDriverOptionReason(splitBackendList(options.backend),
+                                                    options.device, options.glProvider);
+      !reason.empty())
+    throw UsageError(reason);
   if (compareGoldens && !fs::is_directory(options.golden))
     throw UsageError(
         fmt::format("{}: {}; pass --golden DIR", options.golden,

@@ -78,6 +78,10 @@ Command addSweepCommand(CLI::App& app) {
       return sweep::runListingWorker(options->listingWorker, options->listingStart,
                                      options->backend, backendOptions);
     }
+    if (std::string reason = unreadDriverOptionReason(splitBackendList(options->backend),
+                                                      options->device, options->glProvider);
+        !reason.empty())
+      throw UsageError(reason);
     // A --shaders folder with no listings, or a --listings glob that matches
     // none, is refused before the built-ins' sweep, not found empty after it.
     if (options->noBuiltins && options->listings.empty())

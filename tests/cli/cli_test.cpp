@@ -140,6 +140,23 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"sweep --no-builtins --listings ''", "nothing to sweep"},
            {"eval --backend oracle --device 0 -", "--backend oracle has none"},
            {"eval --backend gl --rules vulkan -", "a gl driver is judged by its own API's rules"},
+           // A driver option no backend of the command reads, which each
+           // would pass over without a word (each case ends at once without
+           // the check too: no server left up, no suite or sweep run).
+           {"eval --backend gl --device 7 -",
+            "--device 7: gl does not take a device (only gl:gpu, vk and vk:gpu do)"},
+           {"eval --backend vk --gl-provider egl -",
+            "--gl-provider egl: vk does not take an OpenGL context provider"},
+           {"eval --backend gl:gpu --gl-provider osmesa -", "gl:gpu does not take"},
+           {"serve --backend gl:softpipe --device 1 --idle-exit 1",
+            "gl:softpipe does not take a device"},
+           {"run --backend gl,gl:softpipe --device 0 --filter 'no-such/*'",
+            "none of gl, gl:softpipe takes a device"},
+           {"sweep --backend vk --gl-provider osmesa --listings 'no-such*'",
+            "vk does not take an OpenGL context"},
+           // One backend of the run reading it is enough; `all` may hold one.
+           {"run --backend gl,vk --device 0 --filter 'no-such/*'", "no case matches --filter"},
+           {"run --backend all --gl-provider egl --filter 'no-such/*'", "no case matches --filter"},
            {"advise --ladder dispersion --scene sphere --budget 1 --results " SNELL_SOURCE_ROOT
             "/docs/bench/fresnel/bench.json",
             "both say which results to read"}}) {

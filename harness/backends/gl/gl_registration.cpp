@@ -47,6 +47,10 @@ BackendEntry glEntry(std::string name, std::string description, GlProviderKind p
   e.capabilities = std::move(can);
   e.goldenKey = std::move(goldenKey);
   e.inAll = inAll;
+  // A device backend has its own display on the device it is given; the
+  // others run on Mesa's software drivers, through either provider.
+  e.takesDevice = provider == GlProviderKind::EglDevice;
+  e.takesGlProvider = provider != GlProviderKind::EglDevice;
   e.make = [provider](const BackendEntry& entry, const BackendOptions& options) {
     return makeGlBackend(
         {entry.name, providerFor(entry, provider, options), entry.capabilities, options.device});

@@ -25,6 +25,7 @@ std::vector<BackendEntry> vkBackendEntries() {
   lavapipe.family = "vk";
   lavapipe.capabilities = vulkan();
   lavapipe.goldenKey = "vk";
+  lavapipe.takesDevice = true;
   lavapipe.make = [](const BackendEntry& entry, const BackendOptions& options) {
     return makeVkBackend(entry.name, true, options.device, options);
   };
