@@ -10,7 +10,7 @@
 #include "baseline/compare_runs.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
-#include "cli/number_checks.h"
+#include "cli/option_checks.h"
 #include "core/errors.h"
 
 namespace snell::cli {

@@ -1,9 +1,12 @@
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -14,6 +17,7 @@
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "cli/eval_setup.h"
+#include "cli/option_checks.h"
 #include "core/errors.h"
 #include "runner/builtin_eval.h"
 #include "runner/eval_client.h"
@@ -70,6 +74,29 @@ void requireReadableFile(const std::string& path) {
     throw UsageError(fmt::format("{}: is a folder; give a JSON Lines file or -", path));
 }
 
+// Standard input must be open and readable as lines: a closed one (its
+// number may then be a socket's) or a folder would read as empty input,
+// and the exit code would vouch for lines nobody checked.
+void requireReadableStdin() {
+  struct stat info {};
+  if (::fstat(STDIN_FILENO, &info) != 0)
+    throw UsageError(
+        "standard input is closed: give a JSON Lines file, or send the lines to snell eval's "
+        "standard input");
+  if (S_ISDIR(info.st_mode))
+    throw UsageError("standard input is a folder: give a JSON Lines file, or -");
+}
+
+// A read that failed part way (an I/O error) would otherwise end the input
+// early like its end does.
+void requireInputReadToItsEnd(const std::istream& in, const std::string& input,
+                              std::size_t answered) {
+  if (in.bad())
+    throw SetupError(fmt::format("{}: reading failed after {} line(s) were answered: {}",
+                                 input == "-" ? "standard input" : input, answered,
+                                 std::strerror(errno)));
+}
+
 // The answers must all have reached standard output (a full disk, a
 // closed pipe): otherwise the exit code would vouch for answers nobody has.
 void requireAnswersWritten() {
@@ -101,6 +128,7 @@ int askServer(const EvalCliOptions& options) {
         "to `snell serve`");
   UniqueFd file;
   int input = STDIN_FILENO;
+  if (options.input == "-") requireReadableStdin();
   if (options.input != "-") {
     requireReadableFile(options.input);
     file = UniqueFd(::open(options.input.c_str(), O_RDONLY | O_CLOEXEC));
@@ -125,7 +153,8 @@ Command addEvalCommand(CLI::App& app) {
       "physics functions (Fresnel, dispersion, critical and Brewster angles) on the physics "
       "reference");
   auto options = std::make_shared<EvalCliOptions>();
-  eval->add_option("--backend", options->backend, "oracle, or a backend (`snell devices`)")
+  eval->add_option("--backend", options->backend,
+                   "oracle (the default), or a backend (`snell devices`)")
       ->check([](const std::string& value) -> std::string {
         return value == "oracle" ? "" : unknownBackendReason(value);
       });
@@ -138,11 +167,13 @@ Command addEvalCommand(CLI::App& app) {
                  "Ask the `snell serve --backend BACKEND` of this user instead of starting the "
                  "driver here");
   eval->add_option("--socket", options->socket,
-                   "With --server: the server's socket, when it was started with --socket");
+                   "With --server: the server's socket, when it was started with --socket")
+      ->check(nonEmptyPath());
   eval->add_option("input", options->input, "JSON Lines file, or - for standard input");
   eval->footer(
       R"(Each line: {"fn":"refract","I":[x,y,z],"N":[x,y,z],"eta":0.66} or {"fn":"reflect",...},
-vectors of 1 to 4 components; "nan", "inf" and "-inf" are accepted as numbers. Each answer:
+vectors of 1 to 4 components; "nan", "inf" and "-inf" are accepted as the vectors' and eta's
+numbers. Each answer:
 value, lo and hi (the fp32 interval the spec allows), the rules followed, "undefined" per
 component where the spec leaves it open, and "alternatives" (value, lo, hi for each way) where
 a branch may go either way: a vector is within the spec when it fits one alternative whole.
@@ -154,7 +185,9 @@ and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "
 Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on every core
 (SNELL_EVAL_THREADS); the answers do not depend on either. On vk the compiled probe programs
 are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), else
-~/.cache/snell/oracle.)");
+~/.cache/snell/oracle.
+Exit 0: every answer within the spec; 1: a driver's vector outside it; 2: a malformed line (the
+others are still answered), or input, options or a driver that cannot be used.)");
   return [options, eval] {
     // Standard input read through C stdio, one character per call, was the
     // largest cost after start-up in a profile of a million lines; this
@@ -167,11 +200,6 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
       throw UsageError(
           "--device and --gl-provider choose a driver, and --backend oracle has none: name a "
           "backend, or drop them");
-    if (options->backend != "oracle")
-      if (std::string reason =
-              unreadDriverOptionReason({options->backend}, options->device, options->glProvider);
-          !reason.empty())
-        throw UsageError(reason);
     if (options->backend != "oracle" && eval->count("--rules")) {
       const std::string own =
           backendRegistry().find(options->backend).family == "vk" ? "vulkan" : "glsl";
@@ -182,8 +210,15 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
             options->rules, options->backend, own, options->rules));
     }
     if (options->server) return askServer(*options);
+    // (A server refuses both: its driver is already up.)
+    if (options->backend != "oracle")
+      if (std::string reason =
+              unreadDriverOptionReason({options->backend}, options->device, options->glProvider);
+          !reason.empty())
+        throw UsageError(reason);
     std::ifstream file;
     std::istream* in = &std::cin;
+    if (options->input == "-") requireReadableStdin();
     if (options->input != "-") {
       requireReadableFile(options->input);
       file.open(options->input);
@@ -204,6 +239,7 @@ are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), e
     evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
     requireAnswersWritten();
+    requireInputReadToItsEnd(*in, options->input, summary.answered);
     return reportSummary(summary, options->input);
   };
 }

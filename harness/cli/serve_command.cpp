@@ -5,6 +5,7 @@
 #include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "cli/eval_setup.h"
+#include "cli/option_checks.h"
 #include "core/errors.h"
 #include "runner/eval_server.h"
 #include "runner/eval_server_protocol.h"
@@ -30,9 +31,11 @@ Command addServeCommand(CLI::App& app) {
       ->required()
       ->check(unknownBackendReason);
   addDriverOptions(*serve, options->device, options->glProvider);
-  serve->add_option("--socket", options->socket,
-                    "Unix socket to listen at (default $XDG_RUNTIME_DIR/snell-serve-BACKEND.sock, "
-                    "else /tmp/snell-serve-UID-BACKEND.sock)");
+  serve
+      ->add_option("--socket", options->socket,
+                   "Unix socket to listen at (default $XDG_RUNTIME_DIR/snell-serve-BACKEND.sock, "
+                   "else /tmp/snell-serve-UID-BACKEND.sock)")
+      ->check(nonEmptyPath());
   serve->add_option("--watch", options->watch,
                     "Also stop when this file changes (repeatable): the loaded driver libraries "
                     "and snell itself are always watched");

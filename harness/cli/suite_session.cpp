@@ -20,7 +20,7 @@
 #include "baseline/shard.h"
 #include "cli/backend_options.h"
 #include "cli/commands.h"
-#include "cli/number_checks.h"
+#include "cli/option_checks.h"
 #include "cli/shell_word.h"
 #include "compare/image_library.h"
 #include "core/atomic_file.h"

@@ -7,7 +7,7 @@
 
 #include "cli/backend_options.h"
 #include "cli/commands.h"
-#include "cli/number_checks.h"
+#include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
 #include "core/manifest.h"

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <string>
 #include <thread>
 
 #include "core/errors.h"
@@ -29,17 +30,45 @@ void requireOwnServer(int fd, const std::string& socketPath) {
 }
 
 // Sends the input, then shuts the sending side so the server sees its end.
-// Stops early when the server is gone (it said why in its trailer).
-void sendInput(int socket, int input, std::atomic<bool>& done) {
+// Stops early when the server is gone (it said why in its trailer). A read
+// that fails is kept in `readError` (its errno): the input did not end.
+void sendInput(int socket, int input, std::atomic<bool>& done, std::atomic<int>& readError) {
   std::array<char, 1 << 16> buffer;
   for (;;) {
     const ssize_t n = ::read(input, buffer.data(), buffer.size());
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0) readError = errno;
     if (n <= 0 || !writeAll(socket, buffer.data(), static_cast<std::size_t>(n))) break;
   }
   ::shutdown(socket, SHUT_WR);
   done = true;
 }
+
+// Copies the answers out whole: a server stopped part way through one
+// leaves no cut-off line in the output.
+class WholeLines {
+ public:
+  explicit WholeLines(std::ostream& out) : out_(out) {}
+  void write(const char* begin, const char* end) {
+    const char* last = begin;
+    for (const char* p = end; p != begin; --p)
+      if (p[-1] == '\n') {
+        last = p;
+        break;
+      }
+    if (last == begin) {
+      partial_.append(begin, end);
+      return;
+    }
+    out_.write(partial_.data(), static_cast<std::streamsize>(partial_.size()));
+    out_.write(begin, last - begin);
+    partial_.assign(last, end);
+  }
+
+ private:
+  std::ostream& out_;
+  std::string partial_;
+};
 
 }  // namespace
 
@@ -65,8 +94,9 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
   if (ownInput < 0)
     throw SetupError(fmt::format("cannot read the input: {}", std::strerror(errno)));
   auto senderDone = std::make_shared<std::atomic<bool>>(false);
-  std::thread sender([fd, ownInput, senderDone] {
-    sendInput(fd, ownInput, *senderDone);
+  auto readError = std::make_shared<std::atomic<int>>(0);
+  std::thread sender([fd, ownInput, senderDone, readError] {
+    sendInput(fd, ownInput, *senderDone, *readError);
     ::close(ownInput);
   });
   // Its socket is then kept open (shut, so its writes fail) rather than
@@ -88,6 +118,7 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
   } endSender{sender, *senderDone, connection};
 
   std::array<char, 1 << 16> buffer;
+  WholeLines answers(out);
   std::optional<std::string> trailer;
   for (;;) {
     const ssize_t n = ::recv(fd, buffer.data(), buffer.size(), 0);
@@ -100,17 +131,22 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
       continue;
     }
     const char* mark = static_cast<const char*>(std::memchr(begin, kEvalTrailerMark, n));
-    out.write(begin, (mark ? mark : end) - begin);
+    answers.write(begin, mark ? mark : end);
     if (mark) trailer.emplace(mark + 1, end);
   }
   out.flush();
   if (!out) throw SetupError("cannot write the answers (standard output failed)");
   if (!trailer)
     throw SetupError(fmt::format(
-        "{}: the server closed the connection before it finished (see its log)", socketPath));
+        "{}: the server closed the connection before it finished (see its log); the answers "
+        "written (whole lines only) cover part of the input",
+        socketPath));
   const EvalReply reply = parseReplyTrailer(*trailer);
   if (!reply.error.empty()) throw SetupError(reply.error);
   endSender.answered = true;
+  if (const int error = *readError)
+    throw SetupError(fmt::format("reading the input failed after {} line(s) were answered: {}",
+                                 reply.summary.answered, std::strerror(error)));
   return reply.summary;
 }
 

@@ -168,13 +168,8 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
                     getpid(), backendName_, request.backend, backendName_, request.backend));
     return true;
   }
-  if (request.build != build_) {
-    refuse(
-        fmt::format("this server (pid {}) runs another build of snell than the one asking; "
-                    "stop it (kill {}) and start the server of this build",
-                    getpid(), getpid()));
-    return true;
-  }
+  // A rebuilt snell asks as another build: the change is what the client
+  // is told about, and the server stops, before the builds are compared.
   if (const std::optional<std::string> changed = watched_.firstChanged()) {
     reply.serverStopped = true;
     why = fmt::format("{} changed since the server started", *changed);
@@ -184,6 +179,13 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
                     "loaded then: start `snell serve --backend {}` again",
                     *changed, getpid(), backendName_));
     return false;
+  }
+  if (request.build != build_) {
+    refuse(
+        fmt::format("this server (pid {}) runs another build of snell than the one asking; "
+                    "stop it (kill {}) and start the server of this build",
+                    getpid(), getpid()));
+    return true;
   }
 
   // The rest of the connection is the input, then room for the answers.

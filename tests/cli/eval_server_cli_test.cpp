@@ -6,10 +6,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/socket.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -95,6 +98,32 @@ bool logged(const fs::path& log, const std::string& text) {
   return false;
 }
 
+// A Unix socket of this process at `path`: listening, or connected to it.
+int unixSocket(const fs::path& path, bool listen) {
+  const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  std::strncpy(address.sun_path, path.c_str(), sizeof(address.sun_path) - 1);
+  const auto* where = reinterpret_cast<const sockaddr*>(&address);
+  const int ok = listen ? ::bind(fd, where, sizeof(address)) | ::listen(fd, 1)
+                        : ::connect(fd, where, sizeof(address));
+  if (ok != 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// Everything the peer sends until it closes, or `limit` passes.
+std::string readUntilClosed(int fd, std::chrono::seconds limit) {
+  timeval timeout{static_cast<time_t>(limit.count()), 0};
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof(timeout));
+  std::string text;
+  char buffer[4096];
+  for (ssize_t n; (n = ::recv(fd, buffer, sizeof(buffer), 0)) > 0;) text.append(buffer, n);
+  return text;
+}
+
 const char* kLines =
     "{\"fn\":\"refract\",\"I\":[0.6,-0.8,0],\"N\":[0,1,0],\"eta\":0.66}\n"
     "{\"fn\":\"reflect\",\"I\":[0.6,-0.8],\"N\":[0,1]}\n"
@@ -144,6 +173,55 @@ TEST(EvalServerCli, StopsWhenAWatchedFileChanges) {
   EXPECT_EQ(refused.out.find("\"line\""), std::string::npos) << "no answers from a stale server";
   EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
   EXPECT_FALSE(fs::exists(socket)) << "a stopped server removes its socket";
+}
+
+// A rebuilt snell asks as another build: the server says what changed and
+// stops, instead of refusing that build and serving the old one on.
+TEST(EvalServerCli, AClientOfARebuiltSnellStopsTheServer) {
+  const Scratch scratch("rebuilt");
+  const fs::path socket = scratch.dir / "gl.sock", log = scratch.dir / "serve.log";
+  const fs::path watched = scratch.file("snell-itself", "old\n");
+  Server server({"--backend", "gl", "--socket", socket.string(), "--watch", watched.string()}, log);
+  ASSERT_TRUE(listening(log)) << readText(log);
+  std::ofstream(watched) << "rebuilt\n";
+  const int fd = unixSocket(socket, false);
+  ASSERT_GE(fd, 0) << std::strerror(errno);
+  const std::string header = "{\"snell_eval\":1,\"backend\":\"gl\",\"build\":\"another\"}\n";
+  ASSERT_EQ(::write(fd, header.data(), header.size()), static_cast<ssize_t>(header.size()));
+  ::shutdown(fd, SHUT_WR);
+  const std::string reply = readUntilClosed(fd, std::chrono::seconds(20));
+  ::close(fd);
+  EXPECT_NE(reply.find("changed since this server"), std::string::npos) << reply;
+  EXPECT_EQ(server.exitWithin(std::chrono::seconds(20)), std::optional<int>(0)) << readText(log);
+}
+
+// A server gone part way through an answer: the client writes the answers
+// that arrived whole, and none cut off.
+TEST(EvalServerCli, AServerGoneMidAnswerLeavesOnlyWholeLines) {
+  const Scratch scratch("cut");
+  const fs::path socket = scratch.dir / "gone.sock";
+  const fs::path input = scratch.file("in.jsonl", kLines);
+  const int listener = unixSocket(socket, true);
+  ASSERT_GE(listener, 0) << std::strerror(errno);
+  std::thread gone([&] {
+    const int fd = ::accept(listener, nullptr, nullptr);
+    if (fd < 0) return;
+    char buffer[4096];
+    (void)::recv(fd, buffer, sizeof(buffer), 0);
+    const std::string partial = "{\"line\":1}\n{\"line\":2,\"va";
+    (void)::write(fd, partial.data(), partial.size());
+    ::close(fd);
+  });
+  const Outcome o = runSnell(
+      fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
+  gone.join();
+  ::close(listener);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_EQ(o.out.rfind("{\"line\":1}\n", 0), 0u) << o.out;
+  EXPECT_EQ(o.out.find("{\"line\":2"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("the answers written (whole lines only) cover part of the input"),
+            std::string::npos)
+      << o.out;
 }
 
 TEST(EvalServerCli, EachUnansweredRequestIsOneExit2Message) {
@@ -274,12 +352,34 @@ TEST(EvalServerCli, StopsWhenItsSocketIsRemoved) {
   EXPECT_NE(readText(log).find("was removed or replaced"), std::string::npos) << readText(log);
 }
 
-TEST(EvalServerCli, AFolderAsInputIsExit2) {
+// Input that cannot be read as lines is exit 2, never read as no lines.
+TEST(EvalServerCli, AnUnreadableInputIsExit2) {
   const Scratch scratch("folder");
   for (const char* flags : {"", "--backend gl --server --socket /nonexistent.sock"}) {
-    const Outcome o = runSnell(fmt::format("eval {} {}", flags, scratch.dir.string()));
-    EXPECT_EQ(o.code, 2) << o.out;
-    EXPECT_NE(o.out.find("is a folder"), std::string::npos) << o.out;
+    for (const auto& [input, message] : std::vector<std::pair<std::string, std::string>>{
+             {scratch.dir.string(), "is a folder"},
+             {"- < " + scratch.dir.string(), "standard input is a folder"},
+             // Closed: the first descriptor a client opens (its socket)
+             // would otherwise be read as the input.
+             {"- <&-", "standard input is closed"}}) {
+      const Outcome o = runSnell(fmt::format("eval {} {}", flags, input));
+      EXPECT_EQ(o.code, 2) << flags << " " << input << ": " << o.out;
+      EXPECT_NE(o.out.find(message), std::string::npos) << flags << " " << input << ": " << o.out;
+    }
+  }
+  // A read that fails part way (reading address 0 of a process is EIO).
+  const Outcome failed = runSnell("eval /proc/self/mem");
+  EXPECT_EQ(failed.code, 2) << failed.out;
+  EXPECT_NE(failed.out.find("/proc/self/mem: reading failed after 0 line(s)"), std::string::npos)
+      << failed.out;
+}
+
+TEST(EvalServerCli, AnEmptySocketPathIsExit2) {
+  for (const char* args :
+       {"eval --backend gl --server --socket '' -", "serve --backend gl --socket ''"}) {
+    const Outcome o = runSnell(args);
+    EXPECT_EQ(o.code, 2) << args << ": " << o.out;
+    EXPECT_NE(o.out.find("--socket: an empty path"), std::string::npos) << args << ": " << o.out;
   }
 }
 

@@ -46,13 +46,16 @@ TEST(EvalStreamCli, BadLineInALaterChunkIsExit2NamingFileAndLine) {
   fs::remove(input);
 }
 
-TEST(EvalStreamCli, BadChunkSizeIsExit2NamingTheVariable) {
+TEST(EvalStreamCli, BadChunkSizeOrThreadCountIsExit2NamingTheVariable) {
   const fs::path input = writeInput("eval-chunk0", "{\"fn\":\"reflect\",\"I\":[1],\"N\":[1]}\n");
-  for (const char* value : {"0", "many", "-3"}) {
-    const Outcome o =
-        runSnell(fmt::format("eval {}", input.string()), fmt::format("SNELL_EVAL_CHUNK={}", value));
-    EXPECT_EQ(o.code, 2) << o.out;
-    EXPECT_NE(o.out.find(fmt::format("SNELL_EVAL_CHUNK={}", value)), std::string::npos) << o.out;
+  // Past the limits a mistyped value would hold the machine's memory or
+  // its every thread.
+  for (const std::string setting :
+       {"SNELL_EVAL_CHUNK=0", "SNELL_EVAL_CHUNK=many", "SNELL_EVAL_CHUNK=-3",
+        "SNELL_EVAL_CHUNK=99999999999", "SNELL_EVAL_THREADS=0", "SNELL_EVAL_THREADS=100000"}) {
+    const Outcome o = runSnell(fmt::format("eval {}", input.string()), setting);
+    EXPECT_EQ(o.code, 2) << setting << ": " << o.out;
+    EXPECT_NE(o.out.find(setting + ": give a whole number from 1 to"), std::string::npos) << o.out;
   }
   fs::remove(input);
 }

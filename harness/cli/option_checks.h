@@ -1,5 +1,5 @@
 #pragma once
-// Checks of numeric options beyond CLI11's own.
+// Checks of option values beyond CLI11's own.
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +13,16 @@ inline CLI::Validator notNan() {
   return CLI::Validator(
       [](const std::string& text) -> std::string {
         return std::isnan(std::strtod(text.c_str(), nullptr)) ? "a number is needed, not nan" : "";
+      },
+      "");
+}
+
+// A path given empty (an unset shell variable) would otherwise stand for
+// the option's default, which is another path than the one meant.
+inline CLI::Validator nonEmptyPath() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        return text.empty() ? "an empty path; give one, or leave the option out" : "";
       },
       "");
 }
