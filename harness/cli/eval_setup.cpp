@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "backends/backend_registry.h"
 #include "core/errors.h"
 #include "runner/block_pool.h"
 #include "runner/oracle_store/oracle_store.h"
@@ -34,7 +35,13 @@ std::unique_ptr<Backend> makeEvalBackend(const std::string& backend, const std::
   BackendOptions options;
   options.device = device;
   options.glProvider = glProvider;
-  options.cacheDir = defaultOracleStoreDir().string();
+  // Only vk keeps anything there (its compiled probe programs).
+  if (backendRegistry().find(backend).family == "vk") {
+    const OracleStoreFolder folder = prepareOracleStoreDir(
+        defaultOracleStoreDir(), "Set SNELL_ORACLE_CACHE to a folder, or to off to say so");
+    if (!folder.note.empty()) fmt::print(stderr, "snell: {}\n", folder.note);
+    options.cacheDir = folder.dir.string();
+  }
   return makeBackend(backend, options);
 }
 

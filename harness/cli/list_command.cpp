@@ -5,6 +5,7 @@
 
 #include "cli/commands.h"
 #include "core/case.h"
+#include "core/errors.h"
 #include "core/status.h"
 #include "runner/case_validation.h"
 #include "runner/listing_oracles.h"
@@ -33,6 +34,10 @@ Command addListCommand(CLI::App& app) {
   return [options] {
     const std::vector<Manifest> manifests = loadCatalog(options->shaders);
     const std::vector<Case> cases = expandCases(manifests, options->filter);
+    // As `run` does: a filter that matches nothing is a mistake, not an
+    // empty catalog.
+    if (cases.empty() && !options->filter.empty())
+      throw UsageError(noCaseMatchesMessage(manifests, options->filter));
     if (options->check) validateCases(cases, options->shaders);
     std::size_t width = 4;
     for (const Case& c : cases) width = std::max(width, c.id.size());

@@ -87,20 +87,12 @@ namespace {
 // none. One that cannot be made costs speed, not results: said once, and
 // the oracle computes everything.
 std::string oracleStoreFor(const SuiteOptions& options) {
-  if (options.oracleCache == "off") return "";
-  const fs::path dir =
-      options.oracleCache.empty() ? defaultOracleStoreDir() : fs::path(options.oracleCache);
-  if (dir.empty()) return "";
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error || !fs::is_directory(dir)) {
-    fmt::print(stderr,
-               "snell: {}: cannot keep oracle results here ({}); every oracle result is "
-               "computed afresh. Pass --oracle-cache DIR, or --oracle-cache off to say so\n",
-               dir.string(), error ? error.message() : "not a folder");
-    return "";
-  }
-  return fs::absolute(dir).string();
+  if (isOracleStoreOff(options.oracleCache)) return "";
+  const OracleStoreFolder folder = prepareOracleStoreDir(
+      options.oracleCache.empty() ? defaultOracleStoreDir() : fs::path(options.oracleCache),
+      "Pass --oracle-cache DIR, or --oracle-cache off to say so");
+  if (!folder.note.empty()) fmt::print(stderr, "snell: {}\n", folder.note);
+  return folder.dir.string();
 }
 
 }  // namespace
@@ -144,8 +136,11 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   for (Case& c : expandCases(run.manifests, options.filter))
     if (!onlyImageCases || c.spec.has("image")) run.cases.push_back(std::move(c));
   if (run.cases.empty())
-    throw UsageError(fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids",
-                                 onlyImageCases ? "image " : "", options.filter));
+    throw UsageError(
+        onlyImageCases
+            ? fmt::format("no image case matches --filter '{}'; `snell list` shows the ids",
+                          options.filter)
+            : noCaseMatchesMessage(run.manifests, options.filter));
   std::optional<Shard> shard;
   if (!options.shard.empty()) shard = parseShard(options.shard);
   // Validating the cases (a derived oracle parses its listing) and asking

@@ -183,6 +183,22 @@ TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
   EXPECT_NE(o.out.find("snell list"), std::string::npos) << o.out;
 }
 
+// As run does, list refuses a filter that matches no case, and a listing's
+// id (which matches none of its cases) is told how to match them.
+TEST(Cli, ListFilterMatchingNothingIsExit2) {
+  const Outcome listing = snell("list --filter 'orange-book/14.1-fresnel'");
+  EXPECT_EQ(listing.code, 2) << listing.out;
+  EXPECT_NE(listing.out.find("use --filter 'orange-book/14.1-fresnel/*'"), std::string::npos)
+      << listing.out;
+  const Outcome none = snell("list --filter 'no-such/*'");
+  EXPECT_EQ(none.code, 2) << none.out;
+  EXPECT_NE(none.out.find("no case matches --filter 'no-such/*'"), std::string::npos) << none.out;
+  const Outcome run = snell("run --filter 'orange-book/14.1-fresnel'");
+  EXPECT_EQ(run.code, 2) << run.out;
+  EXPECT_NE(run.out.find("use --filter 'orange-book/14.1-fresnel/*'"), std::string::npos)
+      << run.out;
+}
+
 TEST(Cli, ListShowsTheFresnelCases) {
   const Outcome o = snell("list");
   EXPECT_EQ(o.code, 0);

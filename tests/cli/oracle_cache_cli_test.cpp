@@ -59,7 +59,9 @@ TEST_F(OracleCacheCli, AFolderThatCannotBeMadeIsSaidAndTheRunGoesOn) {
   std::ofstream(dir_ / "file") << "not a folder";
   const auto outcome = run((dir_ / "file" / "store").string());
   ASSERT_EQ(outcome.code, 0) << outcome.out;
-  EXPECT_NE(outcome.out.find("cannot keep oracle results here"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("cannot keep oracle results or compiled programs here"),
+            std::string::npos)
+      << outcome.out;
   EXPECT_NE(outcome.out.find("none kept"), std::string::npos) << outcome.out;
 }
 
@@ -132,6 +134,33 @@ TEST_F(OracleCacheCli, EvalOnVkKeepsItsCompiledPrograms) {
   EXPECT_EQ(compiledPrograms(dir_ / "store"), 2);
   const auto off = runSnell("eval --backend vk " + input.string(), "SNELL_ORACLE_CACHE=off");
   EXPECT_EQ(off.out, first.out);
+}
+
+// SNELL_ORACLE_CACHE that is no folder to keep programs in is said, as
+// run says it for --oracle-cache, and the answers are the same; OFF in
+// capitals is off too, not a folder of that name.
+TEST_F(OracleCacheCli, EvalSaysWhenItsStoreCannotBeKept) {
+  fs::create_directories(dir_);
+  const fs::path input = dir_ / "input.jsonl";
+  std::ofstream(input) << R"({"fn":"reflect","I":[0.6,-0.8],"N":[0,1]})"
+                       << "\n";
+  std::ofstream(dir_ / "file") << "not a folder";
+  const auto kept = runSnell("eval --backend vk " + input.string(),
+                             fmt::format("SNELL_ORACLE_CACHE={}", (dir_ / "store").string()));
+  ASSERT_EQ(kept.code, 0) << kept.out;
+  const auto onAFile = runSnell("eval --backend vk " + input.string(),
+                                fmt::format("SNELL_ORACLE_CACHE={}", (dir_ / "file").string()));
+  EXPECT_EQ(onAFile.code, 0) << onAFile.out;
+  EXPECT_NE(onAFile.out.find((dir_ / "file").string() +
+                             ": cannot keep oracle results or compiled programs here (not a "
+                             "folder)"),
+            std::string::npos)
+      << onAFile.out;
+  EXPECT_NE(onAFile.out.find(kept.out), std::string::npos) << onAFile.out;
+  const auto capitals = runSnell("eval --backend vk " + input.string(),
+                                 fmt::format("cd {} && SNELL_ORACLE_CACHE=OFF", dir_.string()));
+  EXPECT_EQ(capitals.code, 0) << capitals.out;
+  EXPECT_FALSE(fs::exists(dir_ / "OFF"));
 }
 
 // `run`'s vk workers keep their compiled programs in `--oracle-cache`, and

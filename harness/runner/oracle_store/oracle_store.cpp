@@ -1,6 +1,12 @@
 #include "runner/oracle_store/oracle_store.h"
 
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "runner/oracle_store/stored_result_format.h"
@@ -30,12 +36,33 @@ fs::path defaultOracleStoreDir() {
     return value ? value : "";
   };
   if (const std::string chosen = env("SNELL_ORACLE_CACHE"); !chosen.empty())
-    return chosen == "off" ? fs::path() : fs::path(chosen);
+    return isOracleStoreOff(chosen) ? fs::path() : fs::path(chosen);
   if (const std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty())
     return fs::path(xdg) / "snell" / "oracle";
   if (const std::string home = env("HOME"); !home.empty())
     return fs::path(home) / ".cache" / "snell" / "oracle";
   return {};
+}
+
+bool isOracleStoreOff(const std::string& value) {
+  return value.size() == 3 && std::tolower(value[0]) == 'o' && std::tolower(value[1]) == 'f' &&
+         std::tolower(value[2]) == 'f';
+}
+
+OracleStoreFolder prepareOracleStoreDir(const fs::path& dir, const std::string& howToChoose) {
+  if (dir.empty()) return {};
+  std::error_code made, looked;
+  fs::create_directories(dir, made);
+  std::string why;
+  if (!fs::is_directory(dir, looked))
+    why = fs::exists(dir, looked) ? "not a folder" : made ? made.message() : "cannot be made";
+  else if (::access(dir.c_str(), W_OK | X_OK) != 0)  // no store for this user either
+    why = std::strerror(errno);
+  if (why.empty()) return {fs::absolute(dir), ""};
+  return {{},
+          fmt::format("{}: cannot keep oracle results or compiled programs here ({}); each is "
+                      "computed afresh. {}",
+                      dir.string(), why, howToChoose)};
 }
 
 }  // namespace snell

@@ -43,7 +43,21 @@ class OracleStore : public KeyedFileStore {
 
 // Where results are kept unless the user says otherwise: $SNELL_ORACLE_CACHE,
 // else $XDG_CACHE_HOME/snell/oracle, else $HOME/.cache/snell/oracle; empty
-// when none of those is set, or when SNELL_ORACLE_CACHE is "off".
+// when none of those is set, or when SNELL_ORACLE_CACHE is off
+// (isOracleStoreOff).
 std::filesystem::path defaultOracleStoreDir();
+
+// "off" in any case: keep nothing (a folder called OFF would be a surprise).
+bool isOracleStoreOff(const std::string& value);
+
+// `dir` made where it is missing, as an absolute path, or empty with a
+// note for the user when it cannot be: a store that cannot be kept costs
+// speed, not results, so the caller says so and goes on without one.
+struct OracleStoreFolder {
+  std::filesystem::path dir;
+  std::string note;
+};
+OracleStoreFolder prepareOracleStoreDir(const std::filesystem::path& dir,
+                                        const std::string& howToChoose);
 
 }  // namespace snell
