@@ -1,6 +1,7 @@
 #include "bench/advisor.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,19 +13,23 @@ namespace snell::bench {
 
 std::vector<Advice> advise(const BenchResults& results, const std::string& scene, double budget,
                            const std::string& metric, const std::string& backend) {
+  // `snell bench` measures one scene, the one its physics reference models.
   if (scene != results.scene)
-    throw UsageError(
-        fmt::format("the results measure scene `{}`, not `{}`; run `snell bench "
-                    "--scene {}` or ask about `{}`",
-                    results.scene, scene, scene, results.scene));
+    throw UsageError(fmt::format(
+        "the results measure scene `{}`, not `{}`: ask about `{}` (`snell bench` measures "
+        "the sphere, which its reference models)",
+        results.scene, scene, results.scene));
   if (!std::isfinite(budget) || budget < 0)
     throw UsageError(fmt::format("--budget {}: give a finite error of 0 or more", budget));
   errorMetric(ImageError{}, metric);  // an unknown metric throws here
-  std::set<std::string> backends;
-  for (const BenchRecord& r : results.records)
+  std::set<std::string> measured, backends;
+  for (const BenchRecord& r : results.records) {
+    measured.insert(r.backend);
     if (backend.empty() || r.backend == backend) backends.insert(r.backend);
+  }
   if (backends.empty())
-    throw UsageError(fmt::format("backend `{}` was not measured in these results", backend));
+    throw UsageError(fmt::format("backend `{}` was not measured in these results; they measure {}",
+                                 backend, fmt::join(measured, ", ")));
 
   std::vector<Advice> out;
   for (const std::string& name : backends) {

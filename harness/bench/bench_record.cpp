@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -94,6 +95,14 @@ BenchRecord fromJson(const json& j) {
   r.error.deP95 = e.at("de_p95").get<double>();
   r.error.compared = e.value("compared_pixels", std::size_t{0});
   r.error.coverageMismatch = e.value("coverage_mismatch_pixels", std::size_t{0});
+  // An error is a distance: a negative or non-finite one is no measurement,
+  // and would be chosen as the most accurate.
+  for (const double value : {r.error.rms, r.error.max, r.error.deMean, r.error.deP95})
+    if (!(value >= 0.0 && std::isfinite(value)))
+      throw std::invalid_argument(
+          fmt::format("{} on {} has an error of {}; errors are finite "
+                      "and 0 or more",
+                      r.method, r.backend, value));
   for (const json& bin : j.value("error_by_angle", json::array())) {
     AngleBin b{bin.at("from_deg").get<double>(), bin.at("to_deg").get<double>(), {}};
     b.error.rms = bin.at("rms").get<double>();
@@ -144,7 +153,16 @@ BenchResults readBenchResults(const std::filesystem::path& path) {
     BenchResults results;
     results.scene = doc.at("scene").get<std::string>();
     results.reference = doc.value("reference", "");
-    for (const json& r : doc.at("records")) results.records.push_back(fromJson(r));
+    for (const json& r : doc.at("records")) {
+      BenchRecord record = fromJson(r);
+      // Twice, a method would be its own runner-up.
+      for (const BenchRecord& earlier : results.records)
+        if (earlier.method == record.method && earlier.backend == record.backend)
+          throw std::invalid_argument(
+              fmt::format("{} on {} is measured twice", record.method, record.backend));
+      results.records.push_back(std::move(record));
+    }
+    if (results.records.empty()) throw std::invalid_argument("it holds no measurement");
     return results;
   } catch (const std::exception& error) {
     throw UsageError(

@@ -133,8 +133,8 @@ int askServer(const EvalCliOptions& options) {
     requireReadableFile(options.input);
     file = UniqueFd(::open(options.input.c_str(), O_RDONLY | O_CLOEXEC));
     if (!file)
-      throw UsageError(
-          fmt::format("{}: cannot read this file; give a JSON Lines file or -", options.input));
+      throw UsageError(fmt::format("{}: cannot read this file ({}); give a JSON Lines file or -",
+                                   options.input, std::strerror(errno)));
     input = file.get();
   }
   const std::string socket =
@@ -156,7 +156,12 @@ Command addEvalCommand(CLI::App& app) {
   eval->add_option("--backend", options->backend,
                    "oracle (the default), or a backend (`snell devices`)")
       ->check([](const std::string& value) -> std::string {
-        return value == "oracle" ? "" : unknownBackendReason(value);
+        if (value == "oracle") return "";
+        // The registry's list, with the oracle that eval runs too.
+        std::string reason = unknownBackendReason(value);
+        if (const std::size_t at = reason.find("use one of"); at != std::string::npos)
+          reason.replace(at, 10, "use oracle or one of");
+        return reason;
       });
   eval->add_option("--rules", options->rules,
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
@@ -223,8 +228,8 @@ others are still answered), or input, options or a driver that cannot be used.)"
       requireReadableFile(options->input);
       file.open(options->input);
       if (!file)
-        throw UsageError(
-            fmt::format("{}: cannot read this file; give a JSON Lines file or -", options->input));
+        throw UsageError(fmt::format("{}: cannot read this file ({}); give a JSON Lines file or -",
+                                     options->input, std::strerror(errno)));
       in = &file;
     }
     std::unique_ptr<Backend> backend;

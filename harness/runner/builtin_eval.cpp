@@ -67,7 +67,7 @@ void parseLine(Line& line, std::string_view text, bool onDriver) {
     return;
   }
   try {
-    const json object = json::parse(text.begin(), text.end());
+    const json object = parseEvalJson(text);
     if (!isPhysicsCall(object)) {
       line.call = parseEvalObject(object);
     } else if (onDriver) {
@@ -79,7 +79,11 @@ void parseLine(Line& line, std::string_view text, bool onDriver) {
       line.physics = evaluatePhysicsCall(object);
     }
   } catch (const json::exception& error) {
-    line.error = fmt::format("not valid JSON ({})", readableError(error));
+    // The input's line is the one named already; within it, the column.
+    std::string why = readableError(error);
+    if (const std::size_t at = why.find("at line 1, column "); at != std::string::npos)
+      why.replace(at, 18, "at column ");
+    line.error = fmt::format("not valid JSON ({})", why);
   } catch (const UsageError& error) {
     line.error = error.what();
   }

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <array>
@@ -75,11 +76,23 @@ class WholeLines {
 EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& backend, int input,
                              std::ostream& out) {
   UniqueFd connection = connectTo(socketPath);
-  if (!connection)
+  if (!connection) {
+    const int error = errno;
+    struct stat info {};
+    if (::stat(socketPath.c_str(), &info) == 0 && !S_ISSOCK(info.st_mode))
+      throw UsageError(fmt::format(
+          "{}: is a {}, not a socket; give --socket the socket a `snell serve` listens at",
+          socketPath, S_ISDIR(info.st_mode) ? "folder" : "file"));
+    if (error != ENOENT && error != ECONNREFUSED)
+      throw UsageError(
+          fmt::format("{}: cannot connect ({}); give --socket the socket of a "
+                      "`snell serve` of your own",
+                      socketPath, std::strerror(error)));
     throw UsageError(fmt::format(
         "{}: no snell serve answers here ({}); start one with `snell serve --backend {}` (and "
         "the same --socket), or leave out --server",
-        socketPath, std::strerror(errno), backend));
+        socketPath, std::strerror(error), backend));
+  }
   requireOwnServer(connection.get(), socketPath);
   const std::string header = requestHeaderLine({backend, evalBuildId()});
   if (!writeAll(connection.get(), header.c_str(), header.size()))

@@ -2,8 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cctype>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "core/errors.h"
 
@@ -25,8 +29,22 @@ float number(const json& x, const char* key) {
       fmt::format("\"{}\" must hold numbers (or the strings \"nan\", \"inf\", \"-inf\")", key));
 }
 
+// ` (the line has "Eta": keys are case-sensitive)` where a key differs from
+// `key` in case only, else "".
+std::string caseNearMiss(const json& object, const std::string& key) {
+  for (const auto& [name, value] : object.items())
+    if (name != key && name.size() == key.size() &&
+        std::equal(name.begin(), name.end(), key.begin(), [](char a, char b) {
+          return std::tolower(static_cast<unsigned char>(a)) ==
+                 std::tolower(static_cast<unsigned char>(b));
+        }))
+      return fmt::format(" (the line has \"{}\": keys are case-sensitive)", name);
+  return "";
+}
+
 std::vector<float> floatVector(const json& object, const char* key) {
-  if (!object.contains(key)) throw UsageError(fmt::format("missing \"{}\"", key));
+  if (!object.contains(key))
+    throw UsageError(fmt::format("missing \"{}\"{}", key, caseNearMiss(object, key)));
   const json& value = object.at(key);
   if (!value.is_array() || value.empty() || value.size() > 4)
     throw UsageError(fmt::format("\"{}\" must be an array of 1 to 4 numbers", key));
@@ -37,17 +55,35 @@ std::vector<float> floatVector(const json& object, const char* key) {
 
 }  // namespace
 
-BuiltinCall parseEvalLine(const std::string& text) {
-  return parseEvalObject(json::parse(text));  // throws json::parse_error
+json parseEvalJson(std::string_view text) {
+  std::vector<std::string> keys;
+  std::string twice;
+  const json::parser_callback_t noKeyTwice = [&](int depth, json::parse_event_t event,
+                                                 json& parsed) {
+    if (event == json::parse_event_t::key && depth == 1 && twice.empty()) {
+      std::string key = parsed.get<std::string>();
+      if (std::find(keys.begin(), keys.end(), key) != keys.end()) twice = key;
+      keys.push_back(std::move(key));
+    }
+    return true;
+  };
+  json object = json::parse(text.begin(), text.end(), noKeyTwice);  // throws json::parse_error
+  if (!twice.empty())
+    throw UsageError(fmt::format("\"{}\" is given twice; give each key once", twice));
+  return object;
 }
+
+BuiltinCall parseEvalLine(const std::string& text) { return parseEvalObject(parseEvalJson(text)); }
 
 BuiltinCall parseEvalObject(const json& object) {
   constexpr const char* kFunctions =
       "use \"reflect\" or \"refract\" (a driver or the oracle), or \"fresnel\", \"ior\", "
       "\"critical_angle\" or \"brewster_angle\" (the physics reference)";
   if (!object.is_object()) throw UsageError("expected a JSON object");
-  if (!object.contains("fn") || !object.at("fn").is_string())
-    throw UsageError(fmt::format("missing \"fn\": {}", kFunctions));
+  if (!object.contains("fn"))
+    throw UsageError(fmt::format("missing \"fn\"{}: {}", caseNearMiss(object, "fn"), kFunctions));
+  if (!object.at("fn").is_string())
+    throw UsageError(fmt::format("\"fn\" must be a string: {}", kFunctions));
   BuiltinCall call;
   call.fn = object.at("fn").get<std::string>();
   if (call.fn != "reflect" && call.fn != "refract")
@@ -58,7 +94,9 @@ BuiltinCall parseEvalObject(const json& object) {
     throw UsageError(fmt::format("I has {} components and N has {}: they must match", call.I.size(),
                                  call.N.size()));
   if (call.fn == "refract") {
-    if (!object.contains("eta")) throw UsageError("refract needs a number \"eta\"");
+    if (!object.contains("eta"))
+      throw UsageError(
+          fmt::format("refract needs a number \"eta\"{}", caseNearMiss(object, "eta")));
     call.eta = number(object.at("eta"), "eta");
   }
   return call;

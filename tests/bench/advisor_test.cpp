@@ -5,6 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "core/errors.h"
 
@@ -29,12 +32,27 @@ constexpr const char* kResults = R"({
   ]
 })";
 
-BenchResults handMade() {
+BenchResults read(const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / "snell_advisor_test.json";
-  std::ofstream(path) << kResults;
-  BenchResults results = readBenchResults(path);
-  std::filesystem::remove(path);
-  return results;
+  std::ofstream(path) << text;
+  struct Remove {
+    std::filesystem::path path;
+    ~Remove() { std::filesystem::remove(path); }
+  } remove{path};
+  return readBenchResults(path);
+}
+
+BenchResults handMade() { return read(kResults); }
+
+// The message of the UsageError `f` throws, or "" when it throws none.
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const UsageError& error) {
+    return error.what();
+  }
+  return "";
 }
 
 TEST(Advisor, NamesTheCheapestWithinBudgetAndTheRunnerUp) {
@@ -72,6 +90,35 @@ TEST(Advisor, RefusesWhatTheResultsCannotAnswer) {
   EXPECT_THROW(advise(handMade(), "sphere", -1.0, "de_mean"), UsageError);
   EXPECT_THROW(advise(handMade(), "sphere", 1.0, "de_mean", "gl:softpipe"), UsageError);
   EXPECT_THROW(readBenchResults("/nonexistent/bench.json"), UsageError);
+  // What to ask instead: the measured scene, the measured backends.
+  EXPECT_NE(refusal([] {
+              advise(handMade(), "cube", 1.0, "de_mean");
+            }).find("not `cube`: ask about `sphere`"),
+            std::string::npos);
+  EXPECT_NE(refusal([] {
+              advise(handMade(), "sphere", 1.0, "de_mean", "foo");
+            }).find("they measure gl, vk"),
+            std::string::npos);
+}
+
+// A file no advice can come from is refused as it is read: no records, an
+// error that is no distance (it would be the most accurate), a method
+// measured twice (it would be its own runner-up).
+TEST(Advisor, ResultsThatMeasureNothingSoundAreRefused) {
+  const std::string first = R"({"method": "m/1", "backend": "gl", "timings": [{"width": 64,
+      "height": 64, "median_ms": 1.0}], "error": {"rms": 0.1, "max": 0.5, "de_mean": 6.0,
+      "de_p95": 12.0}})";
+  std::string negative = first;
+  negative.replace(negative.find("6.0"), 3, "-6.0");
+  for (const auto& [records, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"", "it holds no measurement"},
+           {negative, "m/1 on gl has an error of -6"},
+           {first + "," + first, "m/1 on gl is measured twice"}}) {
+    const std::string message =
+        refusal([&] { read(R"({"scene": "sphere", "records": [)" + records + "]}"); });
+    EXPECT_NE(message.find(expected), std::string::npos) << records << ": " << message;
+  }
+  EXPECT_EQ(refusal([&] { read(R"({"scene": "sphere", "records": [)" + first + "]}"); }), "");
 }
 
 }  // namespace

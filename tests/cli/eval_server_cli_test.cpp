@@ -243,6 +243,13 @@ TEST(EvalServerCli, EachUnansweredRequestIsOneExit2Message) {
               "to `snell serve`");
   const fs::path plain = scratch.file("not-a-socket", "keep me\n");
   expectExit2(fmt::format("serve --backend gl --socket {}", plain.string()), "is not a socket");
+  // A client given a file or a folder is told it is none, not "start one".
+  expectExit2(
+      fmt::format("eval --backend gl --server --socket {} {}", plain.string(), input.string()),
+      "is a file, not a socket");
+  expectExit2(fmt::format("eval --backend gl --server --socket {} {}", scratch.dir.string(),
+                          input.string()),
+              "is a folder, not a socket");
   EXPECT_EQ(readText(plain), "keep me\n");
   expectExit2(
       fmt::format("serve --backend gl --socket {}/{}", scratch.dir.string(), std::string(120, 's')),

@@ -46,6 +46,21 @@ TEST(EvalStreamCli, BadLineInALaterChunkIsExit2NamingFileAndLine) {
   fs::remove(input);
 }
 
+// Each input line is one JSON text: its error names the input's line and
+// the column within it, not JSON's own "line 1".
+TEST(EvalStreamCli, AJsonErrorNamesItsColumnWithinTheLine) {
+  const fs::path input =
+      writeInput("eval-column", "{\"fn\":\"reflect\",\"I\":[1],\"N\":[1]}\n{\"fn\": x}\n");
+  const Outcome o = runSnell(fmt::format("eval {}", input.string()));
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(
+      o.out.find(fmt::format("{}:2: not valid JSON (parse error at column 8:", input.string())),
+      std::string::npos)
+      << o.out;
+  EXPECT_EQ(o.out.find("line 1"), std::string::npos) << o.out;
+  fs::remove(input);
+}
+
 TEST(EvalStreamCli, BadChunkSizeOrThreadCountIsExit2NamingTheVariable) {
   const fs::path input = writeInput("eval-chunk0", "{\"fn\":\"reflect\",\"I\":[1],\"N\":[1]}\n");
   // Past the limits a mistyped value would hold the machine's memory or
