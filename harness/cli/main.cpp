@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <string>
 
 #include "cli/commands.h"
 #include "core/errors.h"
@@ -35,11 +36,27 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
+  } catch (const CLI::ExtrasError& error) {
+    // A first word that is no command: say which are, not "not expected".
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+      std::string names;
+      for (const CLI::App* sub : app.get_subcommands({}))
+        if (!sub->get_group().empty()) names += (names.empty() ? "" : ", ") + sub->get_name();
+      fmt::print(stderr, "snell: unknown command '{}'; the commands are {} (snell --help)\n",
+                 argv[1], names);
+      return 2;
+    }
+    app.exit(error);
+    return 2;
   } catch (const CLI::ParseError& error) {
     app.exit(error);
     return 2;
   }
   try {
+    if (drivers && !version) {
+      fmt::print(stderr, "snell: --drivers goes with --version: snell --version --drivers\n");
+      return 2;
+    }
     if (version) {
       fmt::print("snell {}\n", SNELL_VERSION);
       return drivers ? snell::cli::printBackendDrivers({}) : 0;

@@ -199,6 +199,20 @@ TEST(Cli, ListFilterMatchingNothingIsExit2) {
       << run.out;
 }
 
+// The first word that is no command is named with the commands there are
+// (not CLI11's "argument was not expected"); --drivers alone is refused.
+TEST(Cli, AnUnknownCommandListsTheCommands) {
+  const Outcome o = snell("frobnicate");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("unknown command 'frobnicate'; the commands are run, list, eval"),
+            std::string::npos)
+      << o.out;
+  EXPECT_EQ(o.out.find("worker"), std::string::npos) << "the hidden worker is not offered";
+  const Outcome drivers = snell("--drivers");
+  EXPECT_EQ(drivers.code, 2) << drivers.out;
+  EXPECT_NE(drivers.out.find("--drivers goes with --version"), std::string::npos) << drivers.out;
+}
+
 TEST(Cli, ListShowsTheFresnelCases) {
   const Outcome o = snell("list");
   EXPECT_EQ(o.code, 0);
