@@ -104,7 +104,8 @@ void addBackendOptions(CLI::App& sub, std::string& backend, std::string& device,
   sub.add_option("--backend", backend,
                  "Backends to run: names joined by commas, or all (every one that comes up "
                  "here; `snell devices`)")
-      ->check([](const std::string& value) { return backendListReason(value, true); });
+      ->check([](const std::string& value) { return backendListReason(value, true); })
+      ->capture_default_str();
   addDriverOptions(sub, device, glProvider);
 }
 

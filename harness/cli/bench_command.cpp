@@ -91,7 +91,7 @@ Command addBenchCommand(CLI::App& app) {
     bench::BenchOptions run;
     std::string out = defaultBenchDir();
     std::string metric = "de_mean";
-    bool ablation = true;
+    bool noAblation = false;
   };
   auto options = std::make_shared<Options>();
   options->run.methodsDir = defaultMethodsDir();
@@ -100,12 +100,14 @@ Command addBenchCommand(CLI::App& app) {
                     "folder of ladders, each written to OUT/LADDER (default: shaders/methods, "
                     "every ladder)");
   bench->add_option("--scene", options->run.scene, "Scene to draw (the reference models `sphere`)");
-  bench->add_option("--backends", options->run.backends, "Backends to time, e.g. gl vk")
-      ->delimiter(',');
+  bench->add_option("--backends", options->run.backends, "Backends to time, e.g. gl,vk")
+      ->delimiter(',')
+      ->capture_default_str();
   bench
       ->add_option("--resolutions", options->run.resolutions,
                    "Square image sizes in pixels; the error is measured at the last")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->capture_default_str();
   bench
       ->add_option("--tessellations", options->run.tessellations,
                    "Sphere tessellations to time at the largest resolution, as stacks (slices "
@@ -115,18 +117,26 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',');
   // Ranges stated here: past int, CLI11 says only "Could not convert".
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution")
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
   bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw")
-      ->check(CLI::Range(0, 100000));
-  bench->add_option("--reference-wavelengths", options->run.referenceWavelengths,
-                    "Wavelengths of a dispersion ladder's spectral reference");
-  bench->add_option("--out", options->out,
-                    "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
-                    "vertices.svg/png, wavelengths.svg/png, images/; ablation.json");
-  bench->add_option("--metric", options->metric,
-                    "Error on the chart's axis and for the table's front: rms, max, de_mean, "
-                    "de_p95");
-  bench->add_flag("!--no-ablation", options->ablation,
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  bench
+      ->add_option("--reference-wavelengths", options->run.referenceWavelengths,
+                   "Wavelengths of a dispersion ladder's spectral reference")
+      ->capture_default_str();
+  bench
+      ->add_option("--out", options->out,
+                   "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
+                   "vertices.svg/png, wavelengths.svg/png, images/; ablation.json")
+      ->capture_default_str();
+  bench
+      ->add_option("--metric", options->metric,
+                   "Error on the chart's axis and for the table's front: rms, max, de_mean, "
+                   "de_p95")
+      ->capture_default_str();
+  bench->add_flag("--no-ablation", options->noAblation,
                   "Skip the ablation table of the physics reference");
   bench->footer(
       "Time per frame: a render (draw and RGBA32F read-back), median of warm repeats after the "
@@ -157,7 +167,7 @@ Command addBenchCommand(CLI::App& app) {
       run.methodsDir = methods;
       files += benchLadder(run, dir, options->metric);
     }
-    if (options->ablation) {
+    if (!options->noAblation) {
       const bench::AblationTable table =
           bench::ablationTable(makeScene(options->run.scene), options->run.resolutions.back());
       fmt::print("{}", bench::ablationText(table));

@@ -65,7 +65,8 @@ Command addCompareCommand(CLI::App& app) {
   sub->add_option("--drift", options->drift,
                   "Report a worst slack or image error that grew by more than this factor")
       ->check(CLI::Range(1.0, 1e12))
-      ->check(notNan());
+      ->check(notNan())
+      ->capture_default_str();
   sub->footer("Exit 1 when any comparison has a regression (a status worse than before).");
   return [options] {
     std::vector<RunSide> sides;

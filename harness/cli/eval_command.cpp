@@ -190,7 +190,7 @@ and {"fn":"brewster_angle","n1":1,"n2":1.5} (angles in degrees); each answer's "
 Input is read, drawn and answered 65536 lines at a time (SNELL_EVAL_CHUNK) on every core
 (SNELL_EVAL_THREADS); the answers do not depend on either. On vk the compiled probe programs
 are kept where runs keep oracle results: $SNELL_ORACLE_CACHE (off keeps none), else
-~/.cache/snell/oracle.
+$XDG_CACHE_HOME/snell/oracle, else ~/.cache/snell/oracle.
 Exit 0: every answer within the spec; 1: a driver's vector outside it; 2: a malformed line (the
 others are still answered), or input, options or a driver that cannot be used.)");
   return [options, eval] {

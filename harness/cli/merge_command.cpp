@@ -60,7 +60,8 @@ Command addMergeCommand(CLI::App& app) {
   sub->add_option("results", options->inputs, "Results files of the shards (snell run --json)")
       ->required()
       ->check(CLI::ExistingFile);
-  sub->add_option("--json", options->json, "Merged results file (results.csv is written beside it)")
+  sub->add_option("--json", options->json,
+                  "Merged results file (FILE.csv is written beside it: r.jsonl gives r.csv)")
       ->required();
   sub->add_option("--junit", options->junit, "Write the merged results as JUnit XML");
   sub->add_option("--shaders", options->shaders, "Folder of listings the shards ran")

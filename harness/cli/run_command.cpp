@@ -19,7 +19,8 @@ Command addRunCommand(CLI::App& app) {
                   "-flakes.txt, -skips.txt, or one PREFIX-fails.txt (its siblings are read too)");
   sub->add_option("--reruns", options->reruns,
                   "Times an unexpected failure is run again; one that passes is a Flake")
-      ->check(CLI::Range(0, 100));
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
   sub->add_option("--shard", options->shard,
                   "Run shard I of N (1-based, interleaved): --shard $CI_NODE_INDEX/$CI_NODE_TOTAL");
   sub->add_option("--resume", options->resume,

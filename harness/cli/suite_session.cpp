@@ -115,9 +115,11 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
                  "Seconds a case may take before its worker is killed (default: the manifest's)")
       ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
       ->check(notNan());
-  sub.add_option("--oracle-cache", options.oracleCache,
-                 "Folder where oracle results and compiled Vulkan programs are kept across "
-                 "runs, or off (default: $SNELL_ORACLE_CACHE, else ~/.cache/snell/oracle)");
+  sub.add_option(
+      "--oracle-cache", options.oracleCache,
+      "Folder where oracle results and compiled Vulkan programs are kept across "
+      "runs, or off (default: $SNELL_ORACLE_CACHE, else $XDG_CACHE_HOME/snell/oracle, else "
+      "~/.cache/snell/oracle)");
   sub.add_flag("--validation", options.validation,
                "Vulkan: run under the Khronos validation layer; any message fails the case");
 }

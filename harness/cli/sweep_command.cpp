@@ -46,23 +46,28 @@ Command addSweepCommand(CLI::App& app) {
       ->add_option("--backend", options->backend,
                    "Drivers to sweep, joined by commas (`snell devices`); the oracle is always "
                    "swept")
-      ->check([](const std::string& value) { return backendListReason(value, false); });
+      ->check([](const std::string& value) { return backendListReason(value, false); })
+      ->capture_default_str();
   addDriverOptions(*sweep, options->device, options->glProvider);
-  sweep->add_option("--listings", options->listings,
-                    "Catalog listings to sweep (glob over ids, `snell list`); empty: none");
-  sweep->add_option("--shaders", options->shaders, "The catalog's folder");
+  sweep
+      ->add_option("--listings", options->listings,
+                   "Catalog listings to sweep (glob over ids, `snell list`); empty: none")
+      ->capture_default_str();
+  sweep->add_option("--shaders", options->shaders, "The catalog's folder")->capture_default_str();
   sweep->add_flag("--no-builtins", options->noBuiltins,
                   "Skip refract() and reflect() themselves (the listings only)");
   // The driver child of the listings' sweep (listing_capture.h): not for people.
   sweep->add_option("--listing-worker", options->listingWorker)->group("");
   sweep->add_option("--listing-start", options->listingStart)->group("");
-  sweep->add_option("--out", options->out, "Folder for the charts, their data and the input");
+  sweep->add_option("--out", options->out, "Folder for the charts, their data and the input")
+      ->capture_default_str();
   sweep->add_option("--json", options->json, "Breaks as JSON (default OUT/sweep.json)");
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
   sweep->add_flag("--no-charts", options->noCharts, "Skip the gnuplot charts");
   sweep->add_option("--timeout", options->timeout, "Seconds each driver may take")
       ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
-      ->check(notNan());
+      ->check(notNan())
+      ->capture_default_str();
   sweep->footer(
       "Each break is implementation (a backend left its spec interval, or crashed), undefined\n"
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"

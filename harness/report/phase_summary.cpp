@@ -49,7 +49,9 @@ void printRunTiming(std::ostream& out, const RunTiming& timing) {
     stored += b.oracleStored;
   }
   if (timing.oracleStore.empty())
-    fmt::print(out, "oracle results: {} computed, none kept (--oracle-cache off)\n", results);
+    // Off by the option, by SNELL_ORACLE_CACHE, or a folder that could not
+    // be kept (which the run said when it started).
+    fmt::print(out, "oracle results: {} computed, none kept (no oracle cache this run)\n", results);
   else
     fmt::print(out, "oracle results: {} computed, {} read from {} (computed by an earlier run)\n",
                results - stored, stored, timing.oracleStore);

@@ -49,7 +49,7 @@ TEST_F(OracleCacheCli, ASecondRunReadsWhatTheFirstComputed) {
 TEST_F(OracleCacheCli, OffKeepsNone) {
   const auto outcome = run("off");
   ASSERT_EQ(outcome.code, 0) << outcome.out;
-  EXPECT_NE(outcome.out.find("oracle results: 4 computed, none kept (--oracle-cache off)"),
+  EXPECT_NE(outcome.out.find("oracle results: 4 computed, none kept (no oracle cache this run)"),
             std::string::npos)
       << outcome.out;
 }
