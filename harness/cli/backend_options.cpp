@@ -66,7 +66,7 @@ std::string unreadReason(const std::vector<std::string>& names, const std::strin
   for (const BackendEntry& e : backendRegistry().entries())
     if (e.*reads) readers.push_back(e.name);
   for (const std::string& name : names)
-    if (backendRegistry().find(name).*reads) return "";
+    if (name != "oracle" && backendRegistry().find(name).*reads) return "";
   return fmt::format(
       "{} {}: {} {} {} (only {} {}); drop {}, or run one of those", option, value,
       names.size() == 1 ? names.front() : fmt::format("none of {}", fmt::join(names, ", ")),
@@ -76,18 +76,16 @@ std::string unreadReason(const std::vector<std::string>& names, const std::strin
 
 }  // namespace
 
-std::string unreadDriverOptionReason(const std::vector<std::string>& names,
-                                     const std::string& device, const std::string& glProvider) {
-  if (names.empty() || (names.size() == 1 && names.front() == "all")) return "";
+void requireDriverOptionsRead(const std::vector<std::string>& names, const std::string& device,
+                              const std::string& glProvider) {
+  if (names.empty() || (names.size() == 1 && names.front() == "all")) return;
+  std::string reason;
   if (!device.empty())
-    if (std::string reason =
-            unreadReason(names, "--device", device, "a device", &BackendEntry::takesDevice);
-        !reason.empty())
-      return reason;
-  if (!glProvider.empty())
-    return unreadReason(names, "--gl-provider", glProvider, "an OpenGL context provider",
-                        &BackendEntry::takesGlProvider);
-  return "";
+    reason = unreadReason(names, "--device", device, "a device", &BackendEntry::takesDevice);
+  if (reason.empty() && !glProvider.empty())
+    reason = unreadReason(names, "--gl-provider", glProvider, "an OpenGL context provider",
+                          &BackendEntry::takesGlProvider);
+  if (!reason.empty()) throw UsageError(reason);
 }
 
 void addDriverOptions(CLI::App& sub, std::string& device, std::string& glProvider) {

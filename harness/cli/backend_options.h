@@ -18,11 +18,12 @@ std::string unknownBackendReason(const std::string& name);
 // unknown name), or ""; `all` passes where `allowAll`.
 std::string backendListReason(const std::string& list, bool allowAll);
 
-// Why a given --device or --gl-provider would be passed over without a
-// word, every backend in `names` ignoring it, or "". "all" may run a
-// backend that reads either, and passes.
-std::string unreadDriverOptionReason(const std::vector<std::string>& names,
-                                     const std::string& device, const std::string& glProvider);
+// Throws UsageError where a given --device or --gl-provider would be
+// passed over without a word, every backend in `names` ignoring it (the
+// oracle reads neither). "all" may run a backend that reads either, and
+// passes.
+void requireDriverOptionsRead(const std::vector<std::string>& names, const std::string& device,
+                              const std::string& glProvider);
 
 // --device and --gl-provider: which device, and which OpenGL context
 // provider, a backend's driver is brought up on.

@@ -1,5 +1,6 @@
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -66,18 +67,18 @@ struct EvalCliOptions {
   std::string socket;
 };
 
-// A path given as the input must be a file that can be read (a folder
-// opens, and reads as empty input).
-void requireReadableFile(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error))
-    throw UsageError(fmt::format("{}: is a folder; give a JSON Lines file or -", path));
-}
-
-// Standard input must be open and readable as lines: a closed one (its
-// number may then be a socket's) or a folder would read as empty input,
-// and the exit code would vouch for lines nobody checked.
-void requireReadableStdin() {
+// The input must be lines that can be read: a folder, or a closed
+// standard input, would read as no lines, and the exit code would vouch
+// for lines nobody checked. (A standard input closed before snell started
+// whose number a library reused before main cannot be told from an open
+// one; a closed one a client's socket would take is caught.)
+void requireReadableInput(const std::string& input) {
+  if (input != "-") {
+    std::error_code error;
+    if (std::filesystem::is_directory(input, error))
+      throw UsageError(fmt::format("{}: is a folder; give a JSON Lines file or -", input));
+    return;
+  }
   struct stat info {};
   if (::fstat(STDIN_FILENO, &info) != 0)
     throw UsageError(
@@ -87,14 +88,18 @@ void requireReadableStdin() {
     throw UsageError("standard input is a folder: give a JSON Lines file, or -");
 }
 
-// A read that failed part way (an I/O error) would otherwise end the input
-// early like its end does.
-void requireInputReadToItsEnd(const std::istream& in, const std::string& input,
-                              std::size_t answered) {
-  if (in.bad())
+[[noreturn]] void cannotOpen(const std::string& input) {
+  throw UsageError(fmt::format("{}: cannot read this file ({}); give a JSON Lines file or -", input,
+                               std::strerror(errno)));
+}
+
+// A read that failed part way (an I/O error) ends the input early as its
+// end does: the answers cover the lines before it.
+void requireInputReadToItsEnd(const EvalSummary& summary, const std::string& input) {
+  if (summary.readError != 0)
     throw SetupError(fmt::format("{}: reading failed after {} line(s) were answered: {}",
-                                 input == "-" ? "standard input" : input, answered,
-                                 std::strerror(errno)));
+                                 input == "-" ? "standard input" : input, summary.answered,
+                                 std::strerror(summary.readError)));
 }
 
 // The answers must all have reached standard output (a full disk, a
@@ -126,21 +131,18 @@ int askServer(const EvalCliOptions& options) {
     throw UsageError(
         "with --server the driver is the server's: give --device or --gl-provider "
         "to `snell serve`");
+  requireReadableInput(options.input);
   UniqueFd file;
-  int input = STDIN_FILENO;
-  if (options.input == "-") requireReadableStdin();
   if (options.input != "-") {
-    requireReadableFile(options.input);
     file = UniqueFd(::open(options.input.c_str(), O_RDONLY | O_CLOEXEC));
-    if (!file)
-      throw UsageError(fmt::format("{}: cannot read this file ({}); give a JSON Lines file or -",
-                                   options.input, std::strerror(errno)));
-    input = file.get();
+    if (!file) cannotOpen(options.input);
   }
   const std::string socket =
       options.socket.empty() ? defaultServeSocket(options.backend) : options.socket;
-  const EvalSummary summary = evaluateOnServer(socket, options.backend, input, std::cout);
+  const EvalSummary summary = evaluateOnServer(
+      socket, options.backend, options.input == "-" ? STDIN_FILENO : file.get(), std::cout);
   requireAnswersWritten();
+  requireInputReadToItsEnd(summary, options.input);
   return reportSummary(summary, options.input);
 }
 
@@ -156,12 +158,10 @@ Command addEvalCommand(CLI::App& app) {
   eval->add_option("--backend", options->backend,
                    "oracle (the default), or a backend (`snell devices`)")
       ->check([](const std::string& value) -> std::string {
-        if (value == "oracle") return "";
-        // The registry's list, with the oracle that eval runs too.
-        std::string reason = unknownBackendReason(value);
-        if (const std::size_t at = reason.find("use one of"); at != std::string::npos)
-          reason.replace(at, 10, "use oracle or one of");
-        return reason;
+        if (value == "oracle" || unknownBackendReason(value).empty()) return "";
+        return fmt::format(
+            "unknown backend '{}': use oracle or one of {} (`snell devices` describes them)", value,
+            fmt::join(backendRegistry().names(), ", "));
       });
   eval->add_option("--rules", options->rules,
                    "Precision rules of the oracle's intervals: glsl (OpenGL) or vulkan; a driver "
@@ -200,11 +200,6 @@ others are still answered), or input, options or a driver that cannot be used.)"
     std::ios::sync_with_stdio(false);
     if (!options->socket.empty() && !options->server)
       throw UsageError("--socket names a server's socket: give it with --server");
-    // Options that would be passed over without a word are refused.
-    if (options->backend == "oracle" && (eval->count("--device") || eval->count("--gl-provider")))
-      throw UsageError(
-          "--device and --gl-provider choose a driver, and --backend oracle has none: name a "
-          "backend, or drop them");
     if (options->backend != "oracle" && eval->count("--rules")) {
       const std::string own =
           backendRegistry().find(options->backend).family == "vk" ? "vulkan" : "glsl";
@@ -215,21 +210,15 @@ others are still answered), or input, options or a driver that cannot be used.)"
             options->rules, options->backend, own, options->rules));
     }
     if (options->server) return askServer(*options);
-    // (A server refuses both: its driver is already up.)
-    if (options->backend != "oracle")
-      if (std::string reason =
-              unreadDriverOptionReason({options->backend}, options->device, options->glProvider);
-          !reason.empty())
-        throw UsageError(reason);
+    // Options that would be passed over without a word are refused (a
+    // server refuses both: its driver is already up).
+    requireDriverOptionsRead({options->backend}, options->device, options->glProvider);
+    requireReadableInput(options->input);
     std::ifstream file;
     std::istream* in = &std::cin;
-    if (options->input == "-") requireReadableStdin();
     if (options->input != "-") {
-      requireReadableFile(options->input);
       file.open(options->input);
-      if (!file)
-        throw UsageError(fmt::format("{}: cannot read this file ({}); give a JSON Lines file or -",
-                                     options->input, std::strerror(errno)));
+      if (!file) cannotOpen(options->input);
       in = &file;
     }
     std::unique_ptr<Backend> backend;
@@ -244,7 +233,7 @@ others are still answered), or input, options or a driver that cannot be used.)"
     evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
     const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
     requireAnswersWritten();
-    requireInputReadToItsEnd(*in, options->input, summary.answered);
+    requireInputReadToItsEnd(summary, options->input);
     return reportSummary(summary, options->input);
   };
 }

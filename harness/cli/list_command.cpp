@@ -3,6 +3,7 @@
 
 #include <set>
 
+#include "cli/case_filter.h"
 #include "cli/commands.h"
 #include "core/case.h"
 #include "core/errors.h"

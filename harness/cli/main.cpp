@@ -36,19 +36,17 @@ int main(int argc, char** argv) {
     return app.exit(help);
   } catch (const CLI::CallForAllHelp& help) {
     return app.exit(help);
-  } catch (const CLI::ExtrasError& error) {
+  } catch (const CLI::ParseError& error) {
     // A first word that is no command: say which are, not "not expected".
-    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+    if (dynamic_cast<const CLI::ExtrasError*>(&error) && app.get_subcommands().empty() &&
+        !app.remaining().empty()) {
       std::string names;
       for (const CLI::App* sub : app.get_subcommands({}))
         if (!sub->get_group().empty()) names += (names.empty() ? "" : ", ") + sub->get_name();
       fmt::print(stderr, "snell: unknown command '{}'; the commands are {} (snell --help)\n",
-                 argv[1], names);
+                 app.remaining().front(), names);
       return 2;
     }
-    app.exit(error);
-    return 2;
-  } catch (const CLI::ParseError& error) {
     app.exit(error);
     return 2;
   }

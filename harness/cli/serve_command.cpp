@@ -55,10 +55,7 @@ Only its own user's `snell eval --server` of the same build is answered.)");
     // First: a signal from here on stops the server cleanly (no socket
     // file left behind), whatever it is doing.
     const InterruptFlag interrupt;
-    if (std::string reason =
-            unreadDriverOptionReason({options->backend}, options->device, options->glProvider);
-        !reason.empty())
-      throw UsageError(reason);
+    requireDriverOptionsRead({options->backend}, options->device, options->glProvider);
     std::unique_ptr<Backend> backend =
         makeEvalBackend(options->backend, options->device, options->glProvider);
     ServeOptions serveOptions;

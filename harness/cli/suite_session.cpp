@@ -19,6 +19,7 @@
 #include "baseline/results_file.h"
 #include "baseline/shard.h"
 #include "cli/backend_options.h"
+#include "cli/case_filter.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/shell_word.h"
@@ -105,10 +106,14 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   sub.add_option("--shaders", options.shaders, "Folder of listings")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();
-  sub.add_option("--golden", options.golden, "Folder of blessed goldens")->capture_default_str();
-  sub.add_option("--json", options.json, "Write results as JSON Lines, one object per case");
+  sub.add_option("--golden", options.golden, "Folder of blessed goldens")
+      ->check(nonEmptyPath())
+      ->capture_default_str();
+  sub.add_option("--json", options.json, "Write results as JSON Lines, one object per case")
+      ->check(nonEmptyPath());
   sub.add_option("--out", options.out,
-                 "Folder for rendered images, heat maps and masks (default: snell-out)");
+                 "Folder for rendered images, heat maps and masks (default: snell-out)")
+      ->check(nonEmptyPath());
   sub.add_option("-j,--jobs", options.jobs, "Worker processes (default: one per core)")
       ->check(CLI::Range(1, 256));
   sub.add_option("--timeout", options.timeout,
@@ -116,19 +121,17 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
       ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
       ->check(notNan());
   sub.add_option(
-      "--oracle-cache", options.oracleCache,
-      "Folder where oracle results and compiled Vulkan programs are kept across "
-      "runs, or off (default: $SNELL_ORACLE_CACHE, else $XDG_CACHE_HOME/snell/oracle, else "
-      "~/.cache/snell/oracle)");
+         "--oracle-cache", options.oracleCache,
+         "Folder where oracle results and compiled Vulkan programs are kept across "
+         "runs, or off (default: $SNELL_ORACLE_CACHE, else $XDG_CACHE_HOME/snell/oracle, else "
+         "~/.cache/snell/oracle)")
+      ->check(nonEmptyPath());
   sub.add_flag("--validation", options.validation,
                "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
 
 SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compareGoldens) {
-  if (std::string reason = unreadDriverOptionReason(splitBackendList(options.backend),
-                                                    options.device, options.glProvider);
-      !reason.empty())
-    throw UsageError(reason);
+  requireDriverOptionsRead(splitBackendList(options.backend), options.device, options.glProvider);
   if (compareGoldens && !fs::is_directory(options.golden))
     throw UsageError(
         fmt::format("{}: {}; pass --golden DIR", options.golden,
@@ -139,10 +142,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     if (!onlyImageCases || c.spec.has("image")) run.cases.push_back(std::move(c));
   if (run.cases.empty())
     throw UsageError(
-        onlyImageCases
-            ? fmt::format("no image case matches --filter '{}'; `snell list` shows the ids",
-                          options.filter)
-            : noCaseMatchesMessage(run.manifests, options.filter));
+        noCaseMatchesMessage(run.manifests, options.filter, onlyImageCases ? "image " : ""));
   std::optional<Shard> shard;
   if (!options.shard.empty()) shard = parseShard(options.shard);
   // Validating the cases (a derived oracle parses its listing) and asking

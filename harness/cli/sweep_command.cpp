@@ -83,10 +83,8 @@ Command addSweepCommand(CLI::App& app) {
       return sweep::runListingWorker(options->listingWorker, options->listingStart,
                                      options->backend, backendOptions);
     }
-    if (std::string reason = unreadDriverOptionReason(splitBackendList(options->backend),
-                                                      options->device, options->glProvider);
-        !reason.empty())
-      throw UsageError(reason);
+    requireDriverOptionsRead(splitBackendList(options->backend), options->device,
+                             options->glProvider);
     // A --shaders folder with no listings, or a --listings glob that matches
     // none, is refused before the built-ins' sweep, not found empty after it.
     if (options->noBuiltins && options->listings.empty())

@@ -22,16 +22,6 @@ std::vector<Case> expandCases(const std::vector<Manifest>& manifests, const std:
   return cases;
 }
 
-std::string noCaseMatchesMessage(const std::vector<Manifest>& manifests, const std::string& glob) {
-  for (const Manifest& manifest : manifests)
-    if (fnmatch(glob.c_str(), manifest.id.c_str(), 0) == 0)
-      return fmt::format(
-          "no case matches --filter '{}', which is listing {}'s id: a case's id adds its scene; "
-          "use --filter '{}/*' for all of its cases",
-          glob, manifest.id, manifest.id);
-  return fmt::format("no case matches --filter '{}'; `snell list` shows the ids", glob);
-}
-
 namespace {
 
 [[noreturn]] void unknownSemantic(const Manifest& manifest, const Binding& binding,

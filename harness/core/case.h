@@ -18,11 +18,6 @@ struct Case {
 // Cases of every manifest whose id matches the shell-style glob (empty: all).
 std::vector<Case> expandCases(const std::vector<Manifest>& manifests, const std::string& glob);
 
-// What to say when `glob` matched no case: a listing's id alone matches
-// none of its cases ("<id>/*" does), and an unmatched glob character
-// matches nothing.
-std::string noCaseMatchesMessage(const std::vector<Manifest>& manifests, const std::string& glob);
-
 // The concrete values a case binds: the manifest's names, the scene's floats.
 struct ResolvedBindings {
   UniformMap uniforms;

@@ -215,6 +215,7 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
     done += text.size();
     if (options.progress) options.progress(done);
   }
+  summary.readError = chunks.readError();
   return summary;
 }
 

@@ -21,6 +21,10 @@ struct EvalSummary {
   // "error" answer is "line N: " and this).
   std::size_t firstMalformedLine = 0;
   std::string firstMalformedReason;
+  // The errno of a read of the input that failed part way (0: read to its
+  // end). The reading process's own: a server reports its socket's failures
+  // in its reply, and the client sets this for the input it sends.
+  int readError = 0;
 };
 
 struct EvalOptions {

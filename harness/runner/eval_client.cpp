@@ -65,6 +65,9 @@ class WholeLines {
     out_.write(begin, last - begin);
     partial_.assign(last, end);
   }
+  // Text held back after the last whole line: at the server's trailer
+  // there is none, every answer ending in its newline.
+  bool cutOff() const { return !partial_.empty(); }
 
  private:
   std::ostream& out_;
@@ -154,13 +157,16 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
         "{}: the server closed the connection before it finished (see its log); the answers "
         "written (whole lines only) cover part of the input",
         socketPath));
+  if (answers.cutOff())
+    throw SetupError(fmt::format(
+        "{}: the server's answers end part way through a line (a server of another protocol?)",
+        socketPath));
   const EvalReply reply = parseReplyTrailer(*trailer);
   if (!reply.error.empty()) throw SetupError(reply.error);
   endSender.answered = true;
-  if (const int error = *readError)
-    throw SetupError(fmt::format("reading the input failed after {} line(s) were answered: {}",
-                                 reply.summary.answered, std::strerror(error)));
-  return reply.summary;
+  EvalSummary summary = reply.summary;
+  summary.readError = *readError;
+  return summary;
 }
 
 }  // namespace snell

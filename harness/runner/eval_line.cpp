@@ -56,21 +56,28 @@ std::vector<float> floatVector(const json& object, const char* key) {
 }  // namespace
 
 json parseEvalJson(std::string_view text) {
-  std::vector<std::string> keys;
+  // A key given twice leaves the object with fewer members than keys: the
+  // keys are only counted, and named on a second pass only then.
+  std::size_t keys = 0;
+  const json::parser_callback_t countKeys = [&](int depth, json::parse_event_t event, json&) {
+    if (event == json::parse_event_t::key && depth == 1) ++keys;
+    return true;
+  };
+  json object = json::parse(text.begin(), text.end(), countKeys);  // throws json::parse_error
+  if (!object.is_object() || object.size() == keys) return object;
+  std::vector<std::string> seen;
   std::string twice;
-  const json::parser_callback_t noKeyTwice = [&](int depth, json::parse_event_t event,
-                                                 json& parsed) {
+  const json::parser_callback_t nameTwice = [&](int depth, json::parse_event_t event,
+                                                json& parsed) {
     if (event == json::parse_event_t::key && depth == 1 && twice.empty()) {
       std::string key = parsed.get<std::string>();
-      if (std::find(keys.begin(), keys.end(), key) != keys.end()) twice = key;
-      keys.push_back(std::move(key));
+      if (std::find(seen.begin(), seen.end(), key) != seen.end()) twice = key;
+      seen.push_back(std::move(key));
     }
     return true;
   };
-  json object = json::parse(text.begin(), text.end(), noKeyTwice);  // throws json::parse_error
-  if (!twice.empty())
-    throw UsageError(fmt::format("\"{}\" is given twice; give each key once", twice));
-  return object;
+  const json named = json::parse(text.begin(), text.end(), nameTwice);  // for `twice` only
+  throw UsageError(fmt::format("\"{}\" is given twice; give each key once", twice));
 }
 
 BuiltinCall parseEvalLine(const std::string& text) { return parseEvalObject(parseEvalJson(text)); }

@@ -201,7 +201,7 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
   // that reads them, even after a signal.
   output.finishWithin(kFinishSeconds);
   out.flush();
-  const std::string partial = "the answers above are of the lines it had read, not of all";
+  const std::string partial = "the answers sent are of the lines it had read, not of all";
   bool stopped = input.end() == SocketEnd::Stopped || output.end() == SocketEnd::Stopped;
   if (reply.error.empty()) {
     if (stopped) {

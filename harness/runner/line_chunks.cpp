@@ -1,5 +1,6 @@
 #include "runner/line_chunks.h"
 
+#include <cerrno>
 #include <cstring>
 
 namespace snell {
@@ -13,7 +14,10 @@ bool LineChunks::fill() {
   if (ended_) return false;
   const std::size_t size = text_.size();
   text_.resize(size + kReadBytes);
+  errno = 0;
   in_.read(text_.data() + size, static_cast<std::streamsize>(kReadBytes));
+  // Taken at once: later calls may change errno.
+  if (in_.bad()) readError_ = errno != 0 ? errno : EIO;
   const auto got = static_cast<std::size_t>(in_.gcount());
   text_.resize(size + got);
   if (got < kReadBytes) ended_ = true;

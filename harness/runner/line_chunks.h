@@ -21,6 +21,10 @@ class LineChunks {
   // The number (from 1) of the first line of the last chunk.
   std::size_t firstLineNumber() const { return first_; }
 
+  // The errno of a read that failed, which ended the lines early (0: the
+  // stream was read to its end).
+  int readError() const { return readError_; }
+
  private:
   bool fill();  // reads more text; false at the end of the stream
 
@@ -28,6 +32,7 @@ class LineChunks {
   std::string text_;       // this chunk's lines, then the start of the next
   std::size_t start_ = 0;  // where the unread text begins in text_
   bool ended_ = false;
+  int readError_ = 0;
   std::vector<std::string_view> lines_;
   std::size_t first_ = 1, read_ = 0;
 };

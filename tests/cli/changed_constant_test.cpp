@@ -20,8 +20,8 @@ TEST(ChangedConstant, FresnelPowerEditedFailsOnBothBackends) {
 }
 
 TEST(ChangedConstant, SwappedReflectArgumentsFailOnBothBackends) {
-  expectEveryCaseFails(editedCopy("orange-book/14.1-fresnel", "fresnel.vert", "reflect(i, n)",
-                                  "reflect(n, i)"));
+  expectEveryCaseFails(
+      editedCopy("orange-book/14.1-fresnel", "fresnel.vert", "reflect(i, n)", "reflect(n, i)"));
 }
 
 TEST(ChangedConstant, ChromaticEtaREditedFailsOnBothBackends) {

@@ -138,7 +138,11 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"run --backend gl,gl", "`gl` is named twice"},
            {"sweep --listings 'no-such-listing*'", "no listing matches --listings"},
            {"sweep --no-builtins --listings ''", "nothing to sweep"},
-           {"eval --backend oracle --device 0 -", "--backend oracle has none"},
+           {"eval --backend oracle --device 0 -", "--device 0: oracle does not take a device"},
+           {"eval --backend foo -", "unknown backend 'foo': use oracle or one of gl, "},
+           // Empty (an unset variable): not the default folder in its place.
+           {"run --oracle-cache '' --filter 'no-such/*'", "--oracle-cache: an empty path"},
+           {"run --json '' --filter 'no-such/*'", "--json: an empty path"},
            {"eval --backend gl --rules vulkan -", "a gl driver is judged by its own API's rules"},
            // A driver option no backend of the command reads, which each
            // would pass over without a word (each case ends at once without
@@ -197,6 +201,12 @@ TEST(Cli, ListFilterMatchingNothingIsExit2) {
   EXPECT_EQ(run.code, 2) << run.out;
   EXPECT_NE(run.out.find("use --filter 'orange-book/14.1-fresnel/*'"), std::string::npos)
       << run.out;
+  const Outcome bless = snell("bless --filter 'orange-book/14.1-fresnel' --golden /tmp");
+  EXPECT_EQ(bless.code, 2) << bless.out;
+  EXPECT_NE(bless.out.find("no image case matches --filter 'orange-book/14.1-fresnel', which is "
+                           "listing orange-book/14.1-fresnel's id"),
+            std::string::npos)
+      << bless.out;
 }
 
 // The first word that is no command is named with the commands there are

@@ -18,6 +18,8 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "snell_process.h"
 
@@ -147,6 +149,15 @@ TEST(EvalServerCli, AnswersAsTheDriverInItsOwnProcessDoes) {
                                  good.string()))
                 .code,
             0);
+  // A read of the input that fails part way is said as eval says it, not
+  // taken for its end (reading address 0 of a process is EIO).
+  const Outcome failed = runSnell(
+      fmt::format("eval --backend gl --server --socket {} /proc/self/mem", socket.string()));
+  EXPECT_EQ(failed.code, 2) << failed.out;
+  EXPECT_NE(failed.out.find("/proc/self/mem: reading failed after 0 line(s) were answered: "
+                            "Input/output error"),
+            std::string::npos)
+      << failed.out;
   // Standard input too.
   const Outcome piped = runSnell(
       fmt::format("eval --backend gl --server --socket {} - < {}", socket.string(), good.string()));
@@ -197,31 +208,40 @@ TEST(EvalServerCli, AClientOfARebuiltSnellStopsTheServer) {
 
 // A server gone part way through an answer: the client writes the answers
 // that arrived whole, and none cut off.
+// A server gone part way through an answer: the client writes the answers
+// that arrived whole, and none cut off. One whose reply ends while a line is
+// cut off is refused too, not passed with the piece dropped.
 TEST(EvalServerCli, AServerGoneMidAnswerLeavesOnlyWholeLines) {
   const Scratch scratch("cut");
   const fs::path socket = scratch.dir / "gone.sock";
   const fs::path input = scratch.file("in.jsonl", kLines);
-  const int listener = unixSocket(socket, true);
-  ASSERT_GE(listener, 0) << std::strerror(errno);
-  std::thread gone([&] {
-    const int fd = ::accept(listener, nullptr, nullptr);
-    if (fd < 0) return;
-    char buffer[4096];
-    (void)::recv(fd, buffer, sizeof(buffer), 0);
-    const std::string partial = "{\"line\":1}\n{\"line\":2,\"va";
-    (void)::write(fd, partial.data(), partial.size());
-    ::close(fd);
-  });
-  const Outcome o = runSnell(
-      fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
-  gone.join();
-  ::close(listener);
-  EXPECT_EQ(o.code, 2) << o.out;
-  EXPECT_EQ(o.out.rfind("{\"line\":1}\n", 0), 0u) << o.out;
-  EXPECT_EQ(o.out.find("{\"line\":2"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("the answers written (whole lines only) cover part of the input"),
-            std::string::npos)
-      << o.out;
+  const std::string cut = "{\"line\":1}\n{\"line\":2,\"va";
+  const std::string trailer =
+      "\x1e{\"answered\":2,\"malformed\":0,\"outside_spec\":0,\"first_malformed_line\":0,"
+      "\"first_malformed_reason\":\"\",\"server_stopped\":false}\n";
+  for (const auto& [reply, message] : std::vector<std::pair<std::string, std::string>>{
+           {cut, "the answers written (whole lines only) cover part of the input"},
+           {cut + trailer, "the server's answers end part way through a line"}}) {
+    fs::remove(socket);
+    const int listener = unixSocket(socket, true);
+    ASSERT_GE(listener, 0) << std::strerror(errno);
+    std::thread gone([&, reply = reply] {
+      const int fd = ::accept(listener, nullptr, nullptr);
+      if (fd < 0) return;
+      char buffer[4096];
+      (void)::recv(fd, buffer, sizeof(buffer), 0);
+      (void)::write(fd, reply.data(), reply.size());
+      ::close(fd);
+    });
+    const Outcome o = runSnell(
+        fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
+    gone.join();
+    ::close(listener);
+    EXPECT_EQ(o.code, 2) << o.out;
+    EXPECT_EQ(o.out.rfind("{\"line\":1}\n", 0), 0u) << o.out;
+    EXPECT_EQ(o.out.find("{\"line\":2"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find(message), std::string::npos) << o.out;
+  }
 }
 
 TEST(EvalServerCli, EachUnansweredRequestIsOneExit2Message) {
@@ -377,7 +397,9 @@ TEST(EvalServerCli, AnUnreadableInputIsExit2) {
   // A read that fails part way (reading address 0 of a process is EIO).
   const Outcome failed = runSnell("eval /proc/self/mem");
   EXPECT_EQ(failed.code, 2) << failed.out;
-  EXPECT_NE(failed.out.find("/proc/self/mem: reading failed after 0 line(s)"), std::string::npos)
+  EXPECT_NE(failed.out.find("/proc/self/mem: reading failed after 0 line(s) were answered: "
+                            "Input/output error"),
+            std::string::npos)
       << failed.out;
 }
 

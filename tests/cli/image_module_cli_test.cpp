@@ -14,9 +14,8 @@ using snell::testing::runSnell;
 constexpr const char* kNoModule = "SNELL_IMAGE_LIBRARY=/nonexistent/libsnell_image_library.so";
 
 TEST(ImageModuleCli, AMissingModuleIsOneSetUpErrorBeforeAnyCase) {
-  const auto outcome =
-      runSnell("run --backend gl --filter 'orange-book/14.1-fresnel/*' --oracle-cache off",
-               kNoModule);
+  const auto outcome = runSnell(
+      "run --backend gl --filter 'orange-book/14.1-fresnel/*' --oracle-cache off", kNoModule);
   EXPECT_EQ(outcome.code, 2) << outcome.out;
   EXPECT_NE(outcome.out.find("none of these files exists"), std::string::npos) << outcome.out;
   EXPECT_NE(outcome.out.find("/nonexistent/libsnell_image_library.so"), std::string::npos);
@@ -25,9 +24,8 @@ TEST(ImageModuleCli, AMissingModuleIsOneSetUpErrorBeforeAnyCase) {
 }
 
 TEST(ImageModuleCli, ARunWithoutImageCasesNeedsNone) {
-  const auto outcome =
-      runSnell("run --backend gl --filter 'orange-book/14.1-fresnel/sweep' --oracle-cache off",
-               kNoModule);
+  const auto outcome = runSnell(
+      "run --backend gl --filter 'orange-book/14.1-fresnel/sweep' --oracle-cache off", kNoModule);
   EXPECT_EQ(outcome.code, 0) << outcome.out;
 }
 

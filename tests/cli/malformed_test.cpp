@@ -50,12 +50,15 @@ TEST_P(Malformed, ClearMessageAndExitCodeAndNothingLost) {
   expect.ignore();
   std::getline(expect, expectedText);
 
-  const fs::path results = fs::temp_directory_path() / fmt::format("snell-malformed-{}.jsonl", getpid());
+  const fs::path results =
+      fs::temp_directory_path() / fmt::format("snell-malformed-{}.jsonl", getpid());
   std::ofstream(results) << "previous results\n";
-  const fs::path errors = fs::temp_directory_path() / fmt::format("snell-malformed-{}.err", getpid());
+  const fs::path errors =
+      fs::temp_directory_path() / fmt::format("snell-malformed-{}.err", getpid());
   // A folder with its own golden/ tests damaged goldens; the others use the
   // repository's.
-  const fs::path golden = fs::exists(dir / "golden") ? dir / "golden" : fs::path(SNELL_SOURCE_ROOT "/golden");
+  const fs::path golden =
+      fs::exists(dir / "golden") ? dir / "golden" : fs::path(SNELL_SOURCE_ROOT "/golden");
   const fs::path out = fs::temp_directory_path() / fmt::format("snell-malformed-out-{}", getpid());
   const std::string command = fmt::format(
       "{} run --backend gl -j 1 --shaders {} --golden {} --out {} --json {} >/dev/null 2>{}",
@@ -83,13 +86,12 @@ TEST_P(Malformed, ClearMessageAndExitCodeAndNothingLost) {
   fs::remove(errors);
 }
 
-INSTANTIATE_TEST_SUITE_P(Corpus, Malformed, ::testing::ValuesIn(corpus()),
-                         [](const auto& info) {
-                           std::string name = info.param;
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Corpus, Malformed, ::testing::ValuesIn(corpus()), [](const auto& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+});
 
 TEST(MalformedCorpus, HasAtLeastThirtyInputs) { EXPECT_GE(corpus().size(), 30u); }
 
@@ -109,9 +111,9 @@ TEST(MalformedCorpus, ACaseErrorComesBeforeADriverThatDoesNotComeUp) {
   EXPECT_NE(stderrText.find("manifest.toml:6:"), std::string::npos) << stderrText;
   EXPECT_EQ(stderrText.find("no-such-device"), std::string::npos) << stderrText;
   // Without the case, the driver's error is the message.
-  const std::string alone = fmt::format(
-      "{} run --backend vk --device no-such-device -j 1 --out {} >/dev/null 2>{}", SNELL_BINARY,
-      out.string(), errors.string());
+  const std::string alone =
+      fmt::format("{} run --backend vk --device no-such-device -j 1 --out {} >/dev/null 2>{}",
+                  SNELL_BINARY, out.string(), errors.string());
   const int aloneStatus = std::system(alone.c_str());
   ASSERT_TRUE(WIFEXITED(aloneStatus));
   EXPECT_EQ(WEXITSTATUS(aloneStatus), 2);

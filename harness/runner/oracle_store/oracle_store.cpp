@@ -1,12 +1,9 @@
 #include "runner/oracle_store/oracle_store.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <cctype>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <string>
 
 #include "runner/oracle_store/stored_result_format.h"
@@ -54,10 +51,10 @@ OracleStoreFolder prepareOracleStoreDir(const fs::path& dir, const std::string& 
   std::error_code made, looked;
   fs::create_directories(dir, made);
   std::string why;
+  // A folder this user may only read is still used: its results are read,
+  // and new ones are not kept (KeyedFileStore).
   if (!fs::is_directory(dir, looked))
     why = fs::exists(dir, looked) ? "not a folder" : made ? made.message() : "cannot be made";
-  else if (::access(dir.c_str(), W_OK | X_OK) != 0)  // no store for this user either
-    why = std::strerror(errno);
   if (why.empty()) return {fs::absolute(dir), ""};
   return {{},
           fmt::format("{}: cannot keep oracle results or compiled programs here ({}); each is "
