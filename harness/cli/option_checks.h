@@ -27,4 +27,16 @@ inline CLI::Validator nonEmptyPath() {
       "");
 }
 
+// A count of whole units (seconds, repeats): CLI11 turns "1.5" for an
+// unsigned option into "Value 1.5 not in range", which hides the reason.
+inline CLI::Validator wholeNumber() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        const bool digits =
+            !text.empty() && text.find_first_not_of("0123456789") == std::string::npos;
+        return digits ? "" : "give a whole number";
+      },
+      "");
+}
+
 }  // namespace snell::cli

@@ -42,6 +42,7 @@ Command addServeCommand(CLI::App& app) {
   serve
       ->add_option("--idle-exit", options->idleExit,
                    "Stop after this many seconds without a request (0: never)")
+      ->check(wholeNumber())
       ->check(CLI::Range(0, 604800))  // a week; past the type, CLI11 says only "Could not convert"
       ->capture_default_str();
   serve->footer(

@@ -140,6 +140,7 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"sweep --no-builtins --listings ''", "nothing to sweep"},
            {"eval --backend oracle --device 0 -", "--device 0: oracle does not take a device"},
            {"eval --backend foo -", "unknown backend 'foo': use oracle or one of gl, "},
+           {"serve --backend gl --idle-exit 1.5", "--idle-exit: give a whole number"},
            // Empty (an unset variable): not the default folder in its place.
            {"run --oracle-cache '' --filter 'no-such/*'", "--oracle-cache: an empty path"},
            {"run --json '' --filter 'no-such/*'", "--json: an empty path"},
