@@ -3,6 +3,7 @@
 // (within the tolerance of the CPU reference): a wrong image is never blessed.
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <string.h>
 
 #include <filesystem>
 #include <map>
@@ -21,6 +22,7 @@
 #include "core/errors.h"
 #include "golden/golden_store.h"
 #include "runner/image_check.h"
+#include "runner/interrupt_flag.h"
 
 namespace snell::cli {
 namespace {
@@ -78,11 +80,32 @@ int bless(const SuiteOptions& options) {
   if (!options.json.empty()) files = resultsFileOutputs("--json", options.json);
   checkOutputs(files, {{"--out", options.out}});
   const SuiteRun suite = runSuite(options, true, false);
+  // A bless cut short blesses nothing: a partial set of new goldens beside
+  // old ones, with exit 0, would be committed as if it were whole.
+  if (suite.interruptedBy) {
+    fmt::print(
+        "\nsnell: interrupted by {} before every image case was rendered: nothing "
+        "blessed, the goldens are as they were\n",
+        fmt::format("SIG{}", sigabbrev_np(suite.interruptedBy)));
+    return 130;
+  }
+  // A signal while goldens are written stops after the case being written,
+  // whose files are written together, and says what was and was not.
+  const InterruptFlag interrupt;
+  std::size_t handled = 0;
   std::map<std::string, const Case*> cases;
   for (const Case& c : suite.cases) cases[c.id] = &c;
   int refused = 0;
   std::set<std::pair<std::string, std::string>> written;  // (case, golden key)
   for (const CaseResult& r : suite.results) {
+    if (interrupt.signal()) {
+      fmt::print(
+          "\nsnell: interrupted by {} while goldens were written: {} of {} results "
+          "handled above, the others' goldens are as they were\n",
+          fmt::format("SIG{}", sigabbrev_np(interrupt.signal())), handled, suite.results.size());
+      return 130;
+    }
+    ++handled;
     const Case& c = *cases.at(r.caseId);
     const std::string key = backendRegistry().find(r.backend).goldenKey;
     if (written.count({r.caseId, key})) {

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "baseline/results_csv.h"
+#include "cli/shell_word.h"
 #include "core/atomic_file.h"
 #include "report/junit.h"
 #include "report/phase_summary.h"
@@ -76,8 +77,13 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
     printBaselineReport(std::cout, expectations, report);
   }
   if (output.interruptedBy) {
-    fmt::print("\nsnell: {}; the results written are marked incomplete (--resume {} goes on)\n",
-               incomplete, output.json.empty() ? "FILE" : output.json);
+    if (output.json.empty())
+      fmt::print("\nsnell: {}; without --json no results were kept to go on from\n", incomplete);
+    else
+      fmt::print(
+          "\nsnell: {}; the results written are marked incomplete: to go on, run the same "
+          "command with --resume {} added\n",
+          incomplete, shellWord(output.json));
     return 130;
   }
   return report.failed() ? 1 : 0;

@@ -96,6 +96,33 @@ std::string oracleStoreFor(const SuiteOptions& options) {
   return folder.dir.string();
 }
 
+// Results of an interrupted run are never overwritten unread: a
+// FILE.partial left by a run that was killed is the only copy of its cases,
+// and this run's --json would write over it. And --resume takes a run that
+// was interrupted: a finished one has nothing to go on with, and resuming
+// it would copy it, stale, over --json.
+void requireNothingToResumeIsLost(const SuiteOptions& options) {
+  if (!options.json.empty()) {
+    const fs::path partial = options.json + kPartialSuffix;
+    std::error_code error;
+    const bool resumingIt =
+        !options.resume.empty() && fs::equivalent(options.resume, partial, error);
+    if (fs::exists(partial, error) && !resumingIt)
+      throw UsageError(fmt::format(
+          "{} holds the results of a run that was killed: go on with it (--resume {} --json {}), "
+          "or remove it to start again",
+          partial.string(), shellWord(partial.string()), shellWord(options.json)));
+  }
+  if (options.resume.empty() || options.resume.ends_with(kPartialSuffix)) return;
+  ResultsFileState state;
+  const std::vector<CaseResult> records = readResultsFile(options.resume, &state);
+  if (!state.incomplete && state.tornLine == 0)
+    throw UsageError(fmt::format(
+        "--resume {}: a finished run ({} records, none marked incomplete), so nothing to go on "
+        "with; run without --resume to run it again",
+        options.resume, records.size()));
+}
+
 }  // namespace
 
 void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
@@ -180,6 +207,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   }
   if (!options.expectations.empty())
     run.expectations = loadExpectations(options.expectations, backends, todayUtc());
+  requireNothingToResumeIsLost(options);
   std::map<std::string, CaseResult> resumed;
   if (!options.resume.empty())
     for (CaseResult& r : readResultsFile(options.resume)) resumed[resultKey(r)] = std::move(r);

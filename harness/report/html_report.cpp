@@ -1,11 +1,14 @@
 #include "report/html_report.h"
 
 #include <fmt/format.h>
+#include <stdlib.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <kainjow/mustache.hpp>
 #include <map>
 #include <optional>
@@ -504,13 +507,24 @@ class ReportBuilder {
 ReportStats writeHtmlReport(const std::vector<ReportRun>& runs, const ReportOptions& options,
                             const fs::path& outDir) {
   fs::create_directories(outDir);
-  const fs::path work = outDir / "work";
-  fs::remove_all(work);
-  fs::create_directories(work);
+  // The charts' scratch folder is a new one of this report's own: a folder
+  // of the user's in --out (a `work/` of theirs) is never touched, and it
+  // goes whatever ends the report.
+  std::string pattern = (outDir / ".snell-report-XXXXXX").string();
+  if (!::mkdtemp(pattern.data()))
+    throw SetupError(fmt::format("{}: cannot make a scratch folder for the charts ({})",
+                                 outDir.string(), std::strerror(errno)));
+  const fs::path work = pattern;
+  struct RemoveWork {
+    fs::path path;
+    ~RemoveWork() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  } removeWork{work};
   ReportStats stats;
   const std::string html = ReportBuilder(runs, options, work).render(stats);
   writeFileAtomically(outDir / "index.html", html);
-  fs::remove_all(work);
   stats.bytes = html.size();
   return stats;
 }

@@ -293,6 +293,35 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
   const auto all = records(scratch / "all.jsonl");
   ASSERT_EQ(all.size(), 4u);
   for (const auto& r : all) EXPECT_FALSE(r.contains("incomplete"));
+
+  const std::string rest =
+      fmt::format("run --backend gl --timeout 1 --reruns 0 --filter '{}' --shaders {} --out {}",
+                  kThreeFresnelCases, shaders.string(), (scratch / "out").string());
+  // A finished run has nothing to go on with: resuming it would copy it,
+  // stale, over --json.
+  const Outcome finishedAgain =
+      snell(fmt::format("{} --resume {} --json {}", rest, (scratch / "all.jsonl").string(),
+                        (scratch / "again.jsonl").string()));
+  EXPECT_EQ(finishedAgain.code, 2) << finishedAgain.out;
+  EXPECT_NE(finishedAgain.out.find("a finished run (4 records, none marked incomplete)"),
+            std::string::npos)
+      << finishedAgain.out;
+  EXPECT_FALSE(fs::exists(scratch / "again.jsonl"));
+  // A FILE.partial that a killed run left is the only copy of its cases: a
+  // run that would write over it is refused, and resuming it goes on.
+  const fs::path killed = scratch / "killed.jsonl";
+  const std::string killedText = readText(json);
+  std::ofstream(fs::path(killed.string() + ".partial")) << killedText;
+  const Outcome over = snell(fmt::format("{} --json {}", rest, killed.string()));
+  EXPECT_EQ(over.code, 2) << over.out;
+  EXPECT_NE(over.out.find("holds the results of a run that was killed: go on with it (--resume "),
+            std::string::npos)
+      << over.out;
+  EXPECT_EQ(readText(killed.string() + ".partial"), killedText);
+  const Outcome goesOn = snell(
+      fmt::format("{} --resume {}.partial --json {}", rest, killed.string(), killed.string()));
+  EXPECT_EQ(goesOn.code, 1) << goesOn.out;  // the endless case times out
+  EXPECT_EQ(records(killed).size(), 4u);
 }
 
 }  // namespace

@@ -116,6 +116,17 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   const Outcome badScene = snell(fmt::format("bench --scene nosuch --out {}/made/bench", d));
   EXPECT_EQ(badScene.code, 2) << badScene.out;
   EXPECT_FALSE(fs::exists(dir / "made")) << badScene.out;
+  // A report into a folder of the user's leaves what it holds, a `work/`
+  // of theirs included, and no scratch folder of its own.
+  fs::create_directories(dir / "rep" / "work");
+  std::ofstream(dir / "rep" / "work" / "notes.txt") << "mine\n";
+  const Outcome kept = snell(fmt::format("report {0}/r.jsonl -o {0}/rep", d));
+  EXPECT_EQ(kept.code, 0) << kept.out;
+  EXPECT_TRUE(fs::exists(dir / "rep" / "work" / "notes.txt")) << kept.out;
+  EXPECT_TRUE(fs::exists(dir / "rep" / "index.html")) << kept.out;
+  for (const auto& entry : fs::directory_iterator(dir / "rep"))
+    EXPECT_TRUE(entry.path().filename() == "work" || entry.path().filename() == "index.html")
+        << entry.path();
   const Outcome report = snell(fmt::format("report {0}/r.jsonl -o {0}/file", d));
   EXPECT_EQ(report.code, 2) << report.out;
   EXPECT_NE(report.out.find("-o " + d + "/file: " + d + "/file is a file, not a folder"),

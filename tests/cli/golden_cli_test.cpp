@@ -3,19 +3,24 @@
 // and never a wrong image.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include "compare/image_io.h"
 #include "golden/golden_store.h"
+#include "snell_process.h"
 
 namespace snell {
 namespace {
@@ -124,6 +129,47 @@ TEST_F(GoldenCli, BlessRestoresAChangedGoldenAndSaysByHowMuch) {
   EXPECT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("blessed (changed: max error 0.005"), std::string::npos) << o.output;
   EXPECT_EQ(snell("run").result["status"], "Pass");
+}
+
+// Every golden file's bytes, by path.
+std::map<std::string, std::string> goldenTree(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file()) {
+      std::ifstream in(entry.path(), std::ios::binary);
+      files[entry.path().string()].assign(std::istreambuf_iterator<char>(in), {});
+    }
+  return files;
+}
+
+// A bless cut short by Ctrl-C blesses nothing (a partial set of new
+// goldens with exit 0 would be committed as whole): exit 130, every golden
+// as it was, no temporary file left among them.
+TEST_F(GoldenCli, AnInterruptedBlessBlessesNothing) {
+  nudgeOnePixel(0.005f);  // a golden that a finished bless would write
+  const auto before = goldenTree(dir_ / "golden");
+  const fs::path json = dir_ / "bless.jsonl";
+  const pid_t pid = testing::spawnSnell({"bless", "--backend", "gl,vk", "-j", "1", "--oracle-cache",
+                                         "off", "--shaders", SNELL_SOURCE_ROOT "/shaders",
+                                         "--golden", (dir_ / "golden").string(), "--out",
+                                         (dir_ / "out").string(), "--json", json.string()});
+  const fs::path partial = json.string() + ".partial";
+  // Interrupted once its first result is written, with the rest to render.
+  const auto oneWritten = [&] {
+    std::error_code error;
+    const auto size = fs::file_size(partial, error);
+    return !error && size > 0;
+  };
+  const auto started = std::chrono::steady_clock::now();
+  while (!oneWritten() && std::chrono::steady_clock::now() - started < std::chrono::seconds(120))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(oneWritten());
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_EQ(goldenTree(dir_ / "golden"), before);
 }
 
 TEST_F(GoldenCli, BlessTouchesOnlyTheCasesItRan) {
