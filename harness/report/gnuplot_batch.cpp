@@ -1,11 +1,13 @@
 #include "report/gnuplot_batch.h"
 
 #include <fmt/format.h>
+#include <string.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "core/errors.h"
 
@@ -19,7 +21,21 @@ std::filesystem::path GnuplotBatch::file(const std::string& stem, const std::str
 }
 
 void GnuplotBatch::add(const std::string& commands) {
-  script_ += commands;
+  // Each `set output 'FILE'` draws to FILE.drawing, renamed in run().
+  constexpr std::string_view kOutput = "set output '";
+  std::string drawn;
+  std::size_t from = 0;
+  for (std::size_t at; (at = commands.find(kOutput, from)) != std::string::npos;) {
+    const std::size_t begin = at + kOutput.size();
+    const std::size_t end = commands.find('\'', begin);
+    if (end == std::string::npos) break;
+    const std::filesystem::path output = commands.substr(begin, end - begin);
+    const std::filesystem::path drawing = output.string() + ".drawing";
+    outputs_.emplace_back(drawing, output);
+    drawn += commands.substr(from, begin - from) + drawing.string();
+    from = end;
+  }
+  script_ += drawn + commands.substr(from);
   script_ += "\nunset output\nreset\nunset object\n";
 }
 
@@ -30,11 +46,29 @@ void GnuplotBatch::run() {
   const std::string command =
       fmt::format("cd '{}' && gnuplot charts.gp >gnuplot.log 2>&1", dir_.string());
   const int status = std::system(command.c_str());
+  const auto dropDrawings = [&] {
+    std::error_code ignored;
+    for (const auto& [drawing, output] : outputs_) std::filesystem::remove(dir_ / drawing, ignored);
+  };
+  // std::system ignores SIGINT while gnuplot runs: Ctrl-C stops gnuplot alone.
+  if (status != -1 && WIFSIGNALED(status)) {
+    dropDrawings();
+    throw SetupError(fmt::format("gnuplot was stopped by SIG{}: no chart was written",
+                                 sigabbrev_np(WTERMSIG(status))));
+  }
   if (status != 0) {
+    dropDrawings();
     const std::string output = readBytes(log);
     throw SetupError(fmt::format("gnuplot failed ({}): {}; install gnuplot-nox (ci/packages.txt)",
                                  WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                                  output.substr(0, 2000)));
+  }
+  for (const auto& [drawing, output] : outputs_) {
+    std::error_code error;
+    std::filesystem::rename(dir_ / drawing, dir_ / output, error);
+    if (error)
+      throw SetupError(fmt::format("{}: cannot write the chart ({})", (dir_ / output).string(),
+                                   error.message()));
   }
 }
 

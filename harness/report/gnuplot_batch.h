@@ -4,6 +4,8 @@
 // (each with its own `set output`) and run once.
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace snell {
 
@@ -18,13 +20,17 @@ class GnuplotBatch {
   // are reset after it, so plots do not leak into each other.
   void add(const std::string& commands);
   // Runs gnuplot on the script; throws SetupError with gnuplot's message
-  // when it is missing or fails.
+  // when it is missing, fails or is stopped by a signal. Each chart is
+  // drawn under a temporary name and renamed over its file only when every
+  // chart was drawn: a chart from an earlier run is never left empty or
+  // half drawn, nor a new one beside old ones.
   void run();
 
  private:
   std::filesystem::path dir_;
   std::string script_;
   int files_ = 0;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> outputs_;  // drawn, final
 };
 
 // Reads a whole file as bytes; empty when it is missing.
