@@ -202,23 +202,18 @@ TEST(Cli, FilterMatchingNothingIsExit2WithHint) {
 // As run does, list refuses a filter that matches no case, and a listing's
 // id (which matches none of its cases) is told how to match them.
 TEST(Cli, ListFilterMatchingNothingIsExit2) {
-  const Outcome listing = snell("list --filter 'orange-book/14.1-fresnel'");
-  EXPECT_EQ(listing.code, 2) << listing.out;
-  EXPECT_NE(listing.out.find("use --filter 'orange-book/14.1-fresnel/*'"), std::string::npos)
-      << listing.out;
-  const Outcome none = snell("list --filter 'no-such/*'");
-  EXPECT_EQ(none.code, 2) << none.out;
-  EXPECT_NE(none.out.find("no case matches --filter 'no-such/*'"), std::string::npos) << none.out;
-  const Outcome run = snell("run --filter 'orange-book/14.1-fresnel'");
-  EXPECT_EQ(run.code, 2) << run.out;
-  EXPECT_NE(run.out.find("use --filter 'orange-book/14.1-fresnel/*'"), std::string::npos)
-      << run.out;
-  const Outcome bless = snell("bless --filter 'orange-book/14.1-fresnel' --golden /tmp");
-  EXPECT_EQ(bless.code, 2) << bless.out;
-  EXPECT_NE(bless.out.find("no image case matches --filter 'orange-book/14.1-fresnel', which is "
-                           "listing orange-book/14.1-fresnel's id"),
-            std::string::npos)
-      << bless.out;
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"list --filter 'orange-book/14.1-fresnel'",
+            "use --filter 'orange-book/14.1-fresnel/*'"},
+           {"list --filter 'no-such/*'", "no case matches --filter 'no-such/*'"},
+           {"run --filter 'orange-book/14.1-fresnel'", "use --filter 'orange-book/14.1-fresnel/*'"},
+           {"bless --filter 'orange-book/14.1-fresnel' --golden /tmp",
+            "no image case matches --filter 'orange-book/14.1-fresnel', which is listing "
+            "orange-book/14.1-fresnel's id"}}) {
+    const Outcome o = snell(args);
+    EXPECT_EQ(o.code, 2) << args << ": " << o.out;
+    EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
+  }
 }
 
 // The first word that is no command is named with the commands there are
