@@ -1,7 +1,8 @@
+#include "backends/gl/gl_driver_info.h"
+
 #include <gtest/gtest.h>
 
 #include "backends/gl/gl_backend.h"
-#include "backends/gl/gl_driver_info.h"
 
 namespace snell {
 namespace {
@@ -31,13 +32,22 @@ TEST(GlDriverInfo, ParsesMesaReleaseVersion) {
 }
 
 TEST(GlDriverInfo, ParsesMesaDevelopmentVersionWithoutGitSuffix) {
-  const DriverInfo info = parseGlDriverInfo("3.3 (Core Profile) Mesa 23.1.0-devel (git-1a2b3c)", "softpipe");
+  const DriverInfo info =
+      parseGlDriverInfo("3.3 (Core Profile) Mesa 23.1.0-devel (git-1a2b3c)", "softpipe");
   EXPECT_EQ(info.driverVersion, "Mesa 23.1.0-devel");
   EXPECT_EQ(info.deviceType, "cpu");
 }
 
-TEST(GlDriverInfo, NonMesaDriverHasNoMesaVersion) {
-  const DriverInfo info = parseGlDriverInfo("4.6.0 NVIDIA 535.104.05", "NVIDIA GeForce RTX 3070/PCIe/SSE2");
+// As NVIDIA 580.159.04 answered on an H200 (gl:gpu).
+TEST(GlDriverInfo, ReadsNvidiasDriverVersion) {
+  const DriverInfo info = parseGlDriverInfo("4.6.0 NVIDIA 580.159.04", "NVIDIA H200/PCIe/SSE2");
+  EXPECT_EQ(info.driverVersion, "NVIDIA 580.159.04");
+  EXPECT_EQ(info.deviceType, "other");
+}
+
+TEST(GlDriverInfo, AnUnknownVendorHasNoDriverVersion) {
+  const DriverInfo info =
+      parseGlDriverInfo("4.6.14761 Compatibility Profile Context 21.40.2", "Radeon RX 6800");
   EXPECT_EQ(info.driverVersion, "");
   EXPECT_EQ(info.deviceType, "other");
 }

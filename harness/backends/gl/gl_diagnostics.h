@@ -1,6 +1,10 @@
 #pragma once
-// Mesa's GLSL compiler writes "0:LINE(COLUMN): error: MESSAGE" (or
-// "warning:"): the placed messages of one stage's log.
+// The placed messages of one stage's GL info log. Each GL driver writes its
+// own shape; those read here, as seen from the drivers themselves:
+//   Mesa:   "0:LINE(COLUMN): error: MESSAGE" (or "warning:")
+//   NVIDIA: "0(LINE) : error C0000: MESSAGE" (or "warning C7011:"), seen
+//           from NVIDIA 580.159.04 on an H200
+// A line of another shape is left out: it places nothing.
 #include <string>
 #include <vector>
 
@@ -8,6 +12,6 @@
 
 namespace snell::gl {
 
-std::vector<CompileDiagnostic> parseMesaLog(const std::string& stage, const std::string& log);
+std::vector<CompileDiagnostic> parseInfoLog(const std::string& stage, const std::string& log);
 
 }  // namespace snell::gl

@@ -5,13 +5,17 @@
 namespace snell {
 
 namespace {
-// Mesa appends "Mesa x.y.z" (sometimes with a suffix such as "-devel" or
-// " (git-abc)") to GL_VERSION; the driver version is that word pair.
-std::string mesaVersion(const std::string& version) {
-  const auto start = version.find("Mesa ");
-  if (start == std::string::npos) return "";
-  const auto end = version.find(' ', start + 5);
-  return version.substr(start, end == std::string::npos ? std::string::npos : end - start);
+// The driver's version is the word pair GL_VERSION ends in: Mesa appends
+// "Mesa x.y.z" (sometimes with a suffix such as "-devel" or " (git-abc)"),
+// NVIDIA "NVIDIA x.y.z" ("4.6.0 NVIDIA 580.159.04").
+std::string driverVersionOf(const std::string& version) {
+  for (const char* vendor : {"Mesa ", "NVIDIA "}) {
+    const auto start = version.find(vendor);
+    if (start == std::string::npos) continue;
+    const auto end = version.find(' ', start + std::string(vendor).size());
+    return version.substr(start, end == std::string::npos ? std::string::npos : end - start);
+  }
+  return "";
 }
 
 bool contains(const std::string& text, const char* word) {
@@ -38,7 +42,7 @@ DriverInfo parseGlDriverInfo(const std::string& version, const std::string& rend
   info.api = "OpenGL";
   info.apiVersion = version;
   info.renderer = renderer;
-  info.driverVersion = mesaVersion(version);
+  info.driverVersion = driverVersionOf(version);
   info.deviceType = deviceTypeOf(renderer);
   return info;
 }

@@ -1,9 +1,8 @@
 #include "backends/gl/gl_program_build.h"
 
-#include "backends/gl/gl_diagnostics.h"
-
 #include <utility>
 
+#include "backends/gl/gl_diagnostics.h"
 #include "backends/gl/gl_error_check.h"
 
 namespace snell {
@@ -51,7 +50,9 @@ std::string infoLog(GLuint object, GetLength getLength, GetLog getLog) {
 }
 
 std::string shaderLog(GLuint shader) { return infoLog(shader, glGetShaderiv, glGetShaderInfoLog); }
-std::string programLog(GLuint program) { return infoLog(program, glGetProgramiv, glGetProgramInfoLog); }
+std::string programLog(GLuint program) {
+  return infoLog(program, glGetProgramiv, glGetProgramInfoLog);
+}
 
 std::string labelled(const std::string& label, const std::string& path) {
   return path.empty() ? label : label + " (" + path + ")";
@@ -75,9 +76,11 @@ bool compileStage(GlShader& shader, const std::string& text, const std::string& 
   GLint status = GL_FALSE;
   glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &status);
   std::string stageLog = shaderLog(shader.id());
-  if (status != GL_TRUE && stageLog.empty()) stageLog = "compilation failed (the driver gave no log)";
+  if (status != GL_TRUE && stageLog.empty())
+    stageLog = "compilation failed (the driver gave no log)";
   appendLog(log, heading, stageLog);
-  for (CompileDiagnostic& d : gl::parseMesaLog(stage, stageLog)) outcome.diagnostics.push_back(std::move(d));
+  for (CompileDiagnostic& d : gl::parseInfoLog(stage, stageLog))
+    outcome.diagnostics.push_back(std::move(d));
   return status == GL_TRUE;
 }
 
@@ -126,8 +129,9 @@ BuiltProgram buildGlProgram(const ProgramSource& source,
   if (linked != GL_TRUE) return built;
   if (hasFragment) {
     if (!bindOutputLocations(program.id())) {
-      appendLog(log, heading, "relinking with the fragment outputs bound to their locations failed:\n" +
-                                  programLog(program.id()));
+      appendLog(log, heading,
+                "relinking with the fragment outputs bound to their locations failed:\n" +
+                    programLog(program.id()));
       return built;
     }
     built.fragmentOutputs = queryFragmentOutputs(program.id());
