@@ -1,11 +1,14 @@
 #include "backends/gl/gl_backend.h"
 
+#include <cstdlib>
 #include <iterator>
 #include <memory>
 #include <utility>
 
 #include "backends/gl/gl_context_state.h"
 #include "backends/gl/gl_driver_info.h"
+#include "backends/gl/gl_named_driver.h"
+#include "core/errors.h"
 #include "core/phase_clock.h"
 
 namespace snell {
@@ -22,6 +25,11 @@ class GlBackend final : public Backend {
         core_(createGlContext(config_.provider, request(Profile::Core))) {
     core_.makeCurrent();
     info_ = queryGlDriverInfo();
+    const char* gallium = std::getenv("GALLIUM_DRIVER");
+    if (std::string why = whyNotTheNamedDriver(config_.name, config_.rendererPrefix, info_,
+                                               gallium ? gallium : "");
+        !why.empty())
+      throw SetupError(why);
   }
 
   std::string name() const override { return config_.name; }

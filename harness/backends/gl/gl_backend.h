@@ -16,6 +16,9 @@ struct GlBackendConfig {
   BackendCapabilities capabilities{
       "OpenGL", 45, 450, true, {"vertex", "fragment"}, {"transform-feedback", "fragment-probes"}};
   std::string device;  // EglDevice: the device index
+  // What GL_RENDERER starts with on the driver the name stands for
+  // (gl_named_driver.h); empty: any driver (gl:gpu).
+  std::string rendererPrefix;
 };
 
 std::unique_ptr<Backend> makeGlBackend(const GlBackendConfig& config);

@@ -38,7 +38,7 @@ GlProviderKind providerFor(const BackendEntry& entry, GlProviderKind own,
 
 BackendEntry glEntry(std::string name, std::string description, GlProviderKind provider,
                      std::vector<std::pair<std::string, std::string>> environment,
-                     BackendCapabilities can, std::string goldenKey, bool inAll = true) {
+                     BackendCapabilities can, std::string goldenKey, std::string rendererPrefix) {
   BackendEntry e;
   e.name = std::move(name);
   e.description = std::move(description);
@@ -46,14 +46,13 @@ BackendEntry glEntry(std::string name, std::string description, GlProviderKind p
   e.environment = std::move(environment);
   e.capabilities = std::move(can);
   e.goldenKey = std::move(goldenKey);
-  e.inAll = inAll;
   // A device backend has its own display on the device it is given; the
   // others run on Mesa's software drivers, through either provider.
   e.takesDevice = provider == GlProviderKind::EglDevice;
   e.takesGlProvider = provider != GlProviderKind::EglDevice;
-  e.make = [provider](const BackendEntry& entry, const BackendOptions& options) {
-    return makeGlBackend(
-        {entry.name, providerFor(entry, provider, options), entry.capabilities, options.device});
+  e.make = [provider, rendererPrefix](const BackendEntry& entry, const BackendOptions& options) {
+    return makeGlBackend({entry.name, providerFor(entry, provider, options), entry.capabilities,
+                          options.device, rendererPrefix});
   };
   return e;
 }
@@ -65,23 +64,23 @@ std::vector<BackendEntry> glBackendEntries() {
   // software drivers even where a GPU is present, so each name is one driver.
   std::vector<BackendEntry> out;
   out.push_back(glEntry("gl", "OpenGL 4.5 core on llvmpipe through OSMesa", GlProviderKind::Osmesa,
-                        {}, openGl(45, 450), "gl"));
+                        {}, openGl(45, 450), "gl", "llvmpipe"));
   out.push_back(glEntry("gl:egl", "OpenGL 4.5 core on llvmpipe through EGL (surfaceless)",
                         GlProviderKind::EglSurfaceless, {{"LIBGL_ALWAYS_SOFTWARE", "1"}},
-                        openGl(45, 450), "gl"));
+                        openGl(45, 450), "gl", "llvmpipe"));
   out.push_back(glEntry("gl:llvmpipe-128", "llvmpipe generating 128-bit vector code (OSMesa)",
                         GlProviderKind::Osmesa, {{"LP_NATIVE_VECTOR_WIDTH", "128"}},
-                        openGl(45, 450), "gl-llvmpipe-128"));
+                        openGl(45, 450), "gl-llvmpipe-128", "llvmpipe"));
   out.push_back(glEntry("gl:softpipe", "OpenGL 3.3 core on softpipe (OSMesa)",
                         GlProviderKind::Osmesa, {{"GALLIUM_DRIVER", "softpipe"}}, openGl(33, 330),
-                        "gl-softpipe"));
+                        "gl-softpipe", "softpipe"));
   out.push_back(glEntry("gl:zink", "OpenGL 4.6 core on zink over Vulkan (lavapipe) through EGL",
                         GlProviderKind::EglSurfaceless,
                         {{"LIBGL_ALWAYS_SOFTWARE", "1"}, {"GALLIUM_DRIVER", "zink"}},
-                        openGl(46, 460), "gl-zink"));
+                        openGl(46, 460), "gl-zink", "zink"));
   out.push_back(glEntry("gl:gpu",
                         "OpenGL on a GPU through EGL_EXT_platform_device (--device INDEX)",
-                        GlProviderKind::EglDevice, {}, openGl(46, 460), "gl-gpu"));
+                        GlProviderKind::EglDevice, {}, openGl(46, 460), "gl-gpu", ""));
   return out;
 }
 

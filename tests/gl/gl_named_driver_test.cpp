@@ -1,0 +1,48 @@
+// A GL backend runs the driver its name says, or is refused: the renderer
+// strings below are the ones the drivers gave.
+#include "backends/gl/gl_named_driver.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "backends/gl/gl_driver_info.h"
+
+namespace snell {
+namespace {
+
+const DriverInfo kLlvmpipe =
+    parseGlDriverInfo("4.5 (Core Profile) Mesa 22.3.6", "llvmpipe (LLVM 15.0.6, 256 bits)");
+const DriverInfo kSoftpipe = parseGlDriverInfo("3.3 (Core Profile) Mesa 22.3.6", "softpipe");
+const DriverInfo kZink =
+    parseGlDriverInfo("4.6 (Core Profile) Mesa 22.3.6", "zink (llvmpipe (LLVM 15.0.6, 256 bits))");
+// gl:zink on an H200 whose libEGL loads NVIDIA's driver alone.
+const DriverInfo kNvidia = parseGlDriverInfo("4.6.0 NVIDIA 580.159.04", "NVIDIA H200/PCIe/SSE2");
+
+TEST(GlNamedDriver, TheNamedDriverRuns) {
+  EXPECT_EQ(whyNotTheNamedDriver("gl", "llvmpipe", kLlvmpipe, ""), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:softpipe", "softpipe", kSoftpipe, "softpipe"), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:zink", "zink", kZink, "zink"), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:gpu", "", kNvidia, ""), "");
+}
+
+TEST(GlNamedDriver, AnotherMesaDriverNamesTheVariableThatChoseIt) {
+  const std::string why = whyNotTheNamedDriver("gl", "llvmpipe", kSoftpipe, "softpipe");
+  EXPECT_NE(why.find("gl is llvmpipe, but its context came up on softpipe"), std::string::npos)
+      << why;
+  EXPECT_NE(why.find("GALLIUM_DRIVER=softpipe chose it; unset it"), std::string::npos) << why;
+  EXPECT_NE(whyNotTheNamedDriver("gl:zink", "zink", kLlvmpipe, "").find("`snell devices`"),
+            std::string::npos);
+}
+
+TEST(GlNamedDriver, AnotherVendorsDriverIsSentToGlGpu) {
+  const std::string why = whyNotTheNamedDriver("gl:zink", "zink", kNvidia, "zink");
+  EXPECT_NE(why.find("gl:zink is zink, but its context came up on NVIDIA H200/PCIe/SSE2 "
+                     "(OpenGL 4.6.0 NVIDIA 580.159.04)"),
+            std::string::npos)
+      << why;
+  EXPECT_NE(why.find("run a GPU's own driver as gl:gpu"), std::string::npos) << why;
+}
+
+}  // namespace
+}  // namespace snell
