@@ -236,9 +236,27 @@ std::vector<EglDeviceInfo> listEglDevices() {
       const char* node = lib.queryDeviceString(list[k], EGL_DRM_DEVICE_FILE_EXT);
       info.drmNode = node ? node : "";
     }
+    if (hasExtension(extensions, "EGL_EXT_device_query_name")) {
+      constexpr EGLint kRendererExt = 0x335F;  // EGL_RENDERER_EXT
+      const char* renderer = lib.queryDeviceString(list[k], kRendererExt);
+      const char* vendor = lib.queryDeviceString(list[k], EGL_VENDOR);
+      info.renderer = renderer ? renderer : "";
+      info.vendor = vendor ? vendor : "";
+    }
     out.push_back(std::move(info));
   }
   return out;
+}
+
+std::pair<std::string, std::string> describeEglDevice(const EglDeviceInfo& device) {
+  if (device.software)
+    return {"software (Mesa llvmpipe/softpipe/zink)", "EGL_MESA_device_software"};
+  std::string name = !device.renderer.empty()  ? device.renderer
+                     : !device.drmNode.empty() ? device.drmNode
+                                               : "a device EGL names no further";
+  std::string detail = device.drmNode.empty() ? "no DRM node" : device.drmNode;
+  if (!device.vendor.empty()) detail += ", " + device.vendor;
+  return {name, detail};
 }
 
 std::unique_ptr<GlContext> createEglContext(bool onDevice, const GlContextRequest& request) {

@@ -6,6 +6,7 @@
 // (EGL_KHR_surfaceless_context), so it has no default framebuffer.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/gl/gl_context_provider.h"
@@ -18,9 +19,16 @@ std::unique_ptr<GlContext> createEglContext(bool onDevice, const GlContextReques
 struct EglDeviceInfo {
   int index = 0;
   std::string drmNode;  // "/dev/dri/renderD128"; empty for a software device
+  // EGL_EXT_device_query_name's renderer and vendor, where the device offers
+  // it: NVIDIA's device names no DRM node inside a container.
+  std::string renderer;
+  std::string vendor;
   bool software = false;
   std::string extensions;
 };
+
+// What `snell devices` shows of a device: its name and its detail.
+std::pair<std::string, std::string> describeEglDevice(const EglDeviceInfo& device);
 
 // The devices EGL_EXT_device_enumeration lists; throws SetupError when
 // libEGL or the extension is missing.

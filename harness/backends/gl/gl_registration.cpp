@@ -91,10 +91,10 @@ namespace snell {
 std::vector<DeviceListing> glDeviceListing() {
   std::vector<DeviceListing> out;
   try {
-    for (const EglDeviceInfo& d : listEglDevices())
-      out.push_back({"EGL", d.index,
-                     d.software ? "software (Mesa llvmpipe/softpipe/zink)" : d.drmNode,
-                     d.software ? "EGL_MESA_device_software" : "EGL_EXT_device_drm " + d.drmNode});
+    for (const EglDeviceInfo& d : listEglDevices()) {
+      auto [name, detail] = describeEglDevice(d);
+      out.push_back({"EGL", d.index, std::move(name), std::move(detail)});
+    }
   } catch (const std::exception& error) {
     out.push_back({"EGL", -1, "(none)", error.what()});
   }
