@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -19,10 +20,13 @@
 #include "cli/commands.h"
 #include "cli/eval_setup.h"
 #include "cli/option_checks.h"
+#include "cli/shell_word.h"
 #include "core/errors.h"
 #include "runner/builtin_eval.h"
 #include "runner/eval_client.h"
 #include "runner/eval_server_protocol.h"
+#include "runner/interrupt_flag.h"
+#include "runner/stoppable_input.h"
 #include "runner/unix_socket.h"
 
 namespace snell::cli {
@@ -108,6 +112,23 @@ void requireAnswersWritten() {
   std::cout.flush();
   if (!std::cout)
     throw SetupError("cannot write the answers to standard output (disk full or pipe closed?)");
+}
+
+// Ctrl-C or SIGTERM: the answers written are those of the first lines,
+// each whole; the message says where the rest begins. 128 + the signal, as
+// a shell reports a process the signal ended.
+int reportInterruption(const EvalSummary& summary, const std::string& input, int signal) {
+  const std::string rest =
+      input == "-" ? fmt::format("input line {}", summary.linesDone + 1)
+                   : fmt::format("`tail -n +{} {}`", summary.linesDone + 1, shellWord(input));
+  const std::string written =
+      summary.linesDone == 0
+          ? "no line was answered"
+          : fmt::format("the answers written are those of input lines 1 to {}, each whole",
+                        summary.linesDone);
+  fmt::print(stderr, "snell eval: interrupted by {}: {}; the rest begins at {}\n",
+             signal == SIGTERM ? "SIGTERM" : "SIGINT", written, rest);
+  return 128 + signal;
 }
 
 // The exit code and, for malformed lines, the message on stderr.
@@ -214,12 +235,10 @@ others are still answered), or input, options or a driver that cannot be used.)"
     // server refuses both: its driver is already up).
     requireDriverOptionsRead({options->backend}, options->device, options->glProvider);
     requireReadableInput(options->input);
-    std::ifstream file;
-    std::istream* in = &std::cin;
+    UniqueFd file;
     if (options->input != "-") {
-      file.open(options->input);
-      if (!file) cannotOpen(options->input);
-      in = &file;
+      file = UniqueFd(::open(options->input.c_str(), O_RDONLY | O_CLOEXEC));
+      if (file.get() < 0) cannotOpen(options->input);
     }
     std::unique_ptr<Backend> backend;
     PrecisionRules rules =
@@ -229,10 +248,21 @@ others are still answered), or input, options or a driver that cannot be used.)"
       rules = precisionRulesForApi(backend->driverInfo().api);
     }
     EvalOptions evalOptions = evalOptionsFromEnvironment();
-    TerminalProgress progress;
-    evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
-    const EvalSummary summary = evaluateLines(*in, std::cout, backend.get(), rules, evalOptions);
+    // Ctrl-C ends the input between chunks, or a read waiting on a quiet
+    // pipe; the answers written stay whole lines (reportInterruption).
+    const InterruptFlag interrupt;
+    evalOptions.stop = interrupt.flag();
+    StoppableInputBuffer input(options->input == "-" ? STDIN_FILENO : file.get(), interrupt.flag());
+    std::istream in(&input);
+    EvalSummary summary;
+    {
+      TerminalProgress progress;
+      evalOptions.progress = [&progress](std::size_t lines) { progress.update(lines); };
+      summary = evaluateLines(in, std::cout, backend.get(), rules, evalOptions);
+    }
+    if (input.error() != 0) summary.readError = input.error();
     requireAnswersWritten();
+    if (summary.stopped) return reportInterruption(summary, options->input, interrupt.signal());
     requireInputReadToItsEnd(summary, options->input);
     return reportSummary(summary, options->input);
   };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -153,9 +154,16 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
   std::vector<BlockOutput> blocks;
   const bool onDriver = backend != nullptr;
   std::size_t done = 0;
+  const auto stopRequested = [&] { return options.stop && *options.stop != 0; };
   for (;;) {
-    const std::vector<std::string_view>& text =
+    const std::vector<std::string_view>& read =
         chunks.next(std::max<std::size_t>(1, options.chunkLines));
+    // Once a stop is requested the input ends (options.stop): the lines
+    // already read are answered, but not a last one that the interrupted
+    // read may have cut short.
+    const bool stopping = stopRequested();
+    const std::span<const std::string_view> text(
+        read.data(), read.size() - (stopping && chunks.lastLineUnterminated() ? 1 : 0));
     if (text.empty()) break;
     const std::size_t first = chunks.firstLineNumber();
     const std::size_t blockCount = (text.size() + kBlockLines - 1) / kBlockLines;
@@ -215,7 +223,10 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
     done += text.size();
     if (options.progress) options.progress(done);
   }
-  summary.readError = chunks.readError();
+  summary.linesDone = done;
+  summary.stopped = stopRequested();
+  // A read ended by the stop request's signal is not a failed input.
+  summary.readError = summary.stopped ? 0 : chunks.readError();
   return summary;
 }
 

@@ -2,6 +2,7 @@
 // `snell eval`: JSON Lines in, one JSON line out per input line, in order.
 // With no backend the oracle answers; with one, the driver computes the
 // built-in and the oracle says whether that is within the spec.
+#include <csignal>
 #include <cstddef>
 #include <functional>
 #include <istream>
@@ -25,6 +26,11 @@ struct EvalSummary {
   // end). The reading process's own: a server reports its socket's failures
   // in its reply, and the client sets this for the input it sends.
   int readError = 0;
+  // Input lines answered (blank ones included), and whether a stop request
+  // ended the input before its end: the answers are then those of lines 1
+  // to linesDone, each whole.
+  std::size_t linesDone = 0;
+  bool stopped = false;
 };
 
 struct EvalOptions {
@@ -36,6 +42,10 @@ struct EvalOptions {
   unsigned threads = 1;
   // Called after each chunk's answers are written, with the lines so far.
   std::function<void(std::size_t lines)> progress;
+  // A signal handler's flag: once it is non-zero the input must end
+  // (StoppableInputBuffer ends it), and the lines already read are answered
+  // except a last one cut short without its newline.
+  const volatile std::sig_atomic_t* stop = nullptr;
 };
 
 // Reads all of `in` a chunk at a time. `backend` may be null (oracle); the

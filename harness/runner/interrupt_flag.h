@@ -7,7 +7,8 @@
 namespace snell {
 
 // Installs the handlers for its lifetime (without SA_RESTART, so a blocked
-// poll() returns) and restores the previous ones after.
+// poll() or read() of the thread that made it returns, whichever thread the
+// signal reaches) and restores the previous ones after.
 class InterruptFlag {
  public:
   InterruptFlag();

@@ -29,6 +29,7 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
   text_.erase(0, start_);
   start_ = 0;
   lines_.clear();
+  lastUnterminated_ = false;
   // Offsets first: text_ may move while it grows.
   std::vector<std::pair<std::size_t, std::size_t>> spans;
   std::size_t scanned = 0;
@@ -45,6 +46,7 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
     if (start_ < text_.size()) {  // a last line with no newline
       spans.emplace_back(start_, text_.size() - start_);
       start_ = text_.size();
+      lastUnterminated_ = true;
     }
     break;
   }

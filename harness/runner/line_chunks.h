@@ -25,6 +25,10 @@ class LineChunks {
   // stream was read to its end).
   int readError() const { return readError_; }
 
+  // Whether the last chunk's last line ended without a newline: the end
+  // of the stream, or a read cut short (by a signal, say) inside a line.
+  bool lastLineUnterminated() const { return lastUnterminated_; }
+
  private:
   bool fill();  // reads more text; false at the end of the stream
 
@@ -32,6 +36,7 @@ class LineChunks {
   std::string text_;       // this chunk's lines, then the start of the next
   std::size_t start_ = 0;  // where the unread text begins in text_
   bool ended_ = false;
+  bool lastUnterminated_ = false;
   int readError_ = 0;
   std::vector<std::string_view> lines_;
   std::size_t first_ = 1, read_ = 0;

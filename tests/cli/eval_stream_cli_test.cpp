@@ -1,13 +1,22 @@
 // `snell eval` on input of several chunks (SNELL_EVAL_CHUNK makes them
 // small), as a user runs it: a bad line in a later chunk is named as
 // file:line on stderr with exit 2, and every other line is answered.
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/ioctl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "json_lines.h"
 #include "snell_process.h"
@@ -17,6 +26,7 @@ namespace {
 namespace fs = std::filesystem;
 using snell::testing::jsonLines;
 using snell::testing::Outcome;
+using snell::testing::readText;
 using snell::testing::runSnell;
 
 fs::path writeInput(const std::string& name, const std::string& text) {
@@ -73,6 +83,64 @@ TEST(EvalStreamCli, BadChunkSizeOrThreadCountIsExit2NamingTheVariable) {
     EXPECT_NE(o.out.find(setting + ": give a whole number from 1 to"), std::string::npos) << o.out;
   }
   fs::remove(input);
+}
+
+// Ctrl-C while eval waits for more input: the lines read so far are
+// answered whole, a line the signal cut short is not, and stderr says where
+// the rest begins, with 128 + SIGINT. The input comes through a pipe the
+// test holds open: the signal is sent once eval has read it all (1000
+// lines, two chunks of 500, and the start of a line) and waits for more.
+TEST(EvalStreamCli, InterruptedEvalAnswersWholeLinesAndSaysWhereTheRestBegins) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-eval-int-{}.out", ::getpid());
+  const fs::path err = fs::temp_directory_path() / fmt::format("snell-eval-int-{}.err", ::getpid());
+  int input[2];
+  ASSERT_EQ(::pipe(input), 0);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, input[0], 0);
+  posix_spawn_file_actions_addclose(&actions, input[1]);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::string binary = SNELL_BINARY, eval = "eval", dash = "-";
+  std::vector<char*> argv = {binary.data(), eval.data(), dash.data(), nullptr};
+  std::vector<std::string> environment = {"SNELL_EVAL_CHUNK=500"};
+  for (char** e = environ; *e; ++e) environment.emplace_back(*e);
+  std::vector<char*> envp;
+  for (std::string& e : environment) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  pid_t pid = -1;
+  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), envp.data()), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(input[0]);
+  std::string lines;
+  for (int k = 0; k < 1000; ++k)
+    lines += R"({"fn":"reflect","I":[0.6,-0.8],"N":[0,1]})"
+             "\n";
+  lines += R"({"fn":"refl)";
+  ASSERT_EQ(::write(input[1], lines.data(), lines.size()), static_cast<ssize_t>(lines.size()));
+  // Sent once eval has read everything in the pipe and waits for more.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  int unread = 1;
+  while ((::ioctl(input[1], FIONREAD, &unread) != 0 || unread > 0) &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ::close(input[1]);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal, not by its own exit";
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT);
+  const auto answers = jsonLines(readText(out));
+  ASSERT_EQ(answers.size(), 1000u);
+  EXPECT_EQ(answers.back().at("line"), 1000);
+  const std::string message = readText(err);
+  EXPECT_NE(message.find("interrupted by SIGINT: the answers written are those of input lines 1 "
+                         "to 1000, each whole; the rest begins at input line 1001"),
+            std::string::npos)
+      << message;
+  fs::remove(out);
+  fs::remove(err);
 }
 
 }  // namespace
