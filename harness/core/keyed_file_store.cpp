@@ -9,6 +9,7 @@
 #include <chrono>
 #include <fstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -58,6 +59,37 @@ bool KeyedFileStore::write(const Digest& key, const std::string& bytes) const {
   return !error;
 }
 
+namespace {
+
+bool isHex(std::string_view text) {
+  return !text.empty() && text.find_first_not_of("0123456789abcdef") == std::string_view::npos;
+}
+
+// The store's own files, as pathOf and write name them: a folder of two hex
+// digits, and in it HEX.result, or HEX.result.tmpPID while it is written.
+// The store may be pointed at a folder that holds other files too (a CI
+// cache folder, a project): the trim touches nothing else.
+enum class StoreFile { Foreign, Entry, Temporary };
+StoreFile kindOf(const std::string& folder, const std::string& name) {
+  if (folder.size() != 2 || !isHex(folder)) return StoreFile::Foreign;
+  const auto dot = name.find('.');
+  if (dot == std::string::npos || !isHex(std::string_view(name).substr(0, dot)))
+    return StoreFile::Foreign;
+  const std::string_view rest = std::string_view(name).substr(dot);
+  if (rest == kExtension) return StoreFile::Entry;
+  const std::string_view tmp = ".tmp";
+  const std::string_view extension = kExtension;
+  if (rest.substr(0, extension.size()) == extension &&
+      rest.substr(extension.size(), tmp.size()) == tmp &&
+      rest.size() > extension.size() + tmp.size() &&
+      rest.substr(extension.size() + tmp.size()).find_first_not_of("0123456789") ==
+          std::string_view::npos)
+    return StoreFile::Temporary;
+  return StoreFile::Foreign;
+}
+
+}  // namespace
+
 StoreTrim trimKeyedFileStore(const fs::path& dir, std::uintmax_t maxBytes) {
   struct Entry {
     fs::path path;
@@ -67,20 +99,30 @@ StoreTrim trimKeyedFileStore(const fs::path& dir, std::uintmax_t maxBytes) {
   std::vector<Entry> entries;
   StoreTrim trim;
   std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(dir, error);
-       !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-    if (!it->is_regular_file(error)) continue;
-    const fs::path& path = it->path();
-    const std::string name = path.filename().string();
-    // A write that was interrupted leaves NAME.resultN.tmpPID; one older
-    // than a day belongs to no running worker.
-    if (name.find(".tmp") != std::string::npos) {
-      const auto age = fs::file_time_type::clock::now() - it->last_write_time(error);
-      if (!error && age > std::chrono::hours(24) && fs::remove(path, error)) ++trim.removed;
-      continue;
+  for (auto folder = fs::directory_iterator(dir, error);
+       !error && folder != fs::directory_iterator(); folder.increment(error)) {
+    if (!folder->is_directory(error)) continue;
+    const std::string folderName = folder->path().filename().string();
+    std::error_code inner;
+    for (auto it = fs::directory_iterator(folder->path(), inner);
+         !inner && it != fs::directory_iterator(); it.increment(inner)) {
+      if (!it->is_regular_file(inner)) continue;
+      const fs::path& path = it->path();
+      switch (kindOf(folderName, path.filename().string())) {
+        case StoreFile::Foreign:
+          break;
+        case StoreFile::Temporary: {
+          // A write that was interrupted; one older than a day belongs to
+          // no running process.
+          const auto age = fs::file_time_type::clock::now() - it->last_write_time(inner);
+          if (!inner && age > std::chrono::hours(24) && fs::remove(path, inner)) ++trim.removed;
+          break;
+        }
+        case StoreFile::Entry:
+          entries.push_back({path, it->last_write_time(inner), it->file_size(inner)});
+          break;
+      }
     }
-    if (path.extension() != kExtension) continue;
-    entries.push_back({path, it->last_write_time(error), it->file_size(error)});
   }
   std::uintmax_t total = 0;
   for (const Entry& e : entries) total += e.size;
@@ -88,10 +130,11 @@ StoreTrim trimKeyedFileStore(const fs::path& dir, std::uintmax_t maxBytes) {
             [](const Entry& a, const Entry& b) { return a.used < b.used; });
   for (const Entry& e : entries) {
     if (total <= maxBytes) break;
-    if (fs::remove(e.path, error)) {
-      total -= e.size;
-      ++trim.removed;
-    }
+    // An entry another process trimmed at the same moment is gone all the
+    // same: counted as gone, or two trims at once would each remove what
+    // the other already had.
+    if (fs::remove(e.path, error)) ++trim.removed;
+    if (!error) total -= e.size;
   }
   trim.kept = total;
   return trim;

@@ -60,8 +60,9 @@ struct StoreTrim {
   std::size_t removed = 0;  // files
   std::uintmax_t kept = 0;  // bytes left
 };
-// Removes the least recently used files until at most `maxBytes` are left,
-// and any temporary file an interrupted write left behind.
+// Removes the least recently used entries until at most `maxBytes` are
+// left, and any temporary file an interrupted write left a day ago. Only the
+// store's own files (HEX/HEX.result and their temporaries) are touched.
 StoreTrim trimKeyedFileStore(const std::filesystem::path& dir, std::uintmax_t maxBytes);
 
 }  // namespace snell

@@ -9,6 +9,9 @@
 
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
+#include <string>
+#include <system_error>
 
 #include "core/errors.h"
 
@@ -24,12 +27,30 @@ void closeFd(int& fd) {
   fd = -1;
 }
 
+// The program to start for argv[0]. snell's own workers are started from
+// this process's own image (/proc/self/exe), not from its path: a snell
+// rebuilt or replaced while a run goes on would otherwise join the run as
+// its later workers. argv[0] keeps the path, for ps and messages.
+std::string programFor(const std::string& path) {
+  std::error_code error;
+  const auto own = std::filesystem::read_symlink("/proc/self/exe", error);
+  // Once the file is replaced, the link reads "PATH (deleted)".
+  const bool same = !error && (own.string() == path || own.string() == path + " (deleted)");
+  return same ? "/proc/self/exe" : path;
+}
+
 }  // namespace
 
 WorkerProcess::WorkerProcess(const std::vector<std::string>& argv) {
-  int in[2], out[2], err[2];
-  if (pipe2(in, O_CLOEXEC) || pipe2(out, O_CLOEXEC) || pipe2(err, O_CLOEXEC))
-    throw SetupError(fmt::format("cannot create pipes for a worker: {}", std::strerror(errno)));
+  int in[2] = {-1, -1}, out[2] = {-1, -1}, err[2] = {-1, -1};
+  if (pipe2(in, O_CLOEXEC) || pipe2(out, O_CLOEXEC) || pipe2(err, O_CLOEXEC)) {
+    const int error = errno;
+    for (int* pair : {in, out, err}) {
+      closeFd(pair[0]);
+      closeFd(pair[1]);
+    }
+    throw SetupError(fmt::format("cannot create pipes for a worker: {}", std::strerror(error)));
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_adddup2(&actions, in[0], 0);
@@ -38,7 +59,8 @@ WorkerProcess::WorkerProcess(const std::vector<std::string>& argv) {
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
-  const int rc = posix_spawn(&pid_, argv[0].c_str(), &actions, nullptr, args.data(), environ);
+  const std::string program = programFor(argv[0]);
+  const int rc = posix_spawn(&pid_, program.c_str(), &actions, nullptr, args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(in[0]);
   close(out[1]);

@@ -131,4 +131,55 @@ TEST_P(IsolationSignal, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
 
 INSTANTIATE_TEST_SUITE_P(Signals, IsolationSignal, ::testing::Values(SIGKILL, SIGABRT));
 
+// snell rebuilt (or replaced) while a run goes on: the workers started after
+// that are still the run's own build, not whatever now lies at its path
+// (here a script that would exit 3 as every later worker).
+TEST(Isolation, WorkersStartedAfterTheBinaryIsReplacedAreStillThisBuild) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-replaced-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path binary = dir / "snell";
+  fs::copy_file(SNELL_BINARY, binary);
+  std::vector<std::string> args = {binary.string(),
+                                   "run",
+                                   "--backend",
+                                   "gl,vk",
+                                   "-j",
+                                   "1",
+                                   "--filter",
+                                   "orange-book/14.1-fresnel/*",
+                                   "--oracle-cache",
+                                   "off",
+                                   "--json",
+                                   (dir / "r.jsonl").string(),
+                                   "--out",
+                                   (dir / "out").string()};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, (dir / "stderr").c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Once the first gl result is in, before the vk worker starts (one slot,
+  // the gl cases first).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (snell::testing::readText(dir / "r.jsonl.partial").empty() &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::ofstream(dir / "snell.new") << "#!/bin/sh\nexit 3\n";
+  fs::permissions(dir / "snell.new", fs::perms::owner_all);
+  fs::rename(dir / "snell.new", binary);
+  EXPECT_EQ(exitCode(pid), 0) << snell::testing::readText(dir / "stderr");
+  const auto results = resultsByKey(dir / "r.jsonl");
+  EXPECT_EQ(results.size(), 2 * kFresnelCases);
+  for (const auto& [key, result] : results)
+    EXPECT_EQ(result["status"], "Pass") << key << ": " << result["message"];
+  fs::remove_all(dir);
+}
+
 }  // namespace

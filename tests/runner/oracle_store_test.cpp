@@ -271,6 +271,36 @@ TEST_F(StoreFolder, TheTrimDropsTheLeastRecentlyUsedFirst) {
   EXPECT_TRUE(files().empty());
 }
 
+// The store may be a folder that holds other files (a CI cache folder, a
+// project): the trim removes only its own entries and its own leftover
+// temporaries, however old or large the others are.
+TEST_F(StoreFolder, TheTrimTouchesNoFileThatIsNotTheStores) {
+  const OracleStore store(dir_);
+  ASSERT_TRUE(store.save(keyOf("a"), awkwardResult()));
+  const fs::path entry = files()[0];
+  const fs::path leftover = fs::path(entry.string() + ".tmp4242");
+  fs::copy_file(entry, leftover);
+  const std::vector<fs::path> foreign = {dir_ / "templates" / "page.html.tmpl",
+                                         dir_ / "backup.tmp",
+                                         dir_ / "notes.result",
+                                         dir_ / "project" / "data.result",
+                                         entry.parent_path() / "readme.txt",
+                                         entry.parent_path() / (entry.filename().string() + "l"),
+                                         entry.parent_path() / "0123.result.tmpx"};
+  for (const fs::path& f : foreign) {
+    fs::create_directories(f.parent_path());
+    std::ofstream(f) << std::string(4096, 'x');
+  }
+  const auto old = fs::file_time_type::clock::now() - std::chrono::hours(72);
+  for (const auto& e : fs::recursive_directory_iterator(dir_))
+    if (e.is_regular_file()) fs::last_write_time(e.path(), old);
+  const StoreTrim trim = trimKeyedFileStore(dir_, 0);
+  EXPECT_EQ(trim.removed, 2u) << "the entry and the day-old temporary";
+  EXPECT_FALSE(fs::exists(entry));
+  EXPECT_FALSE(fs::exists(leftover));
+  for (const fs::path& f : foreign) EXPECT_TRUE(fs::exists(f)) << f;
+}
+
 // Counts its evaluations; its identity is set by the test.
 class CountingOracle : public VertexOracle {
  public:
