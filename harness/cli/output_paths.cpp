@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
 #include <system_error>
 
 #include "core/atomic_file.h"
@@ -96,6 +98,12 @@ void checkFolder(const OutputPath& folder) {
     throw UsageError(fmt::format(
         "{} {}: {} is {}, not a folder; name a folder", folder.option, folder.path.string(),
         existing.string(), fs::is_symlink(existing) ? "a link to nothing or to a file" : "a file"));
+  // A read-only folder (or file system) is said before any case runs: its
+  // first write would come from a worker, as that case's crash.
+  if (access(existing.c_str(), W_OK | X_OK) != 0)
+    throw UsageError(fmt::format("{} {}: folder {} is not writable ({}); name a writable folder",
+                                 folder.option, folder.path.string(), existing.string(),
+                                 std::strerror(errno)));
 }
 
 std::string named(const OutputPath& output, const fs::path& id) {

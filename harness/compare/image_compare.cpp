@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "compare/image_io.h"
 #include "compare/image_library.h"
 #include "core/content_hash.h"
 #include "core/errors.h"
@@ -109,12 +110,10 @@ void writeDifferenceHeatMap(const std::filesystem::path& path, const Image& obse
   std::filesystem::path temporary = path;
   temporary += fmt::format(".tmp{}{}", getpid(), path.extension().string());
   SnellImageError error;
-  if (imageLibrary().writeHeatMap(temporary.c_str(), difference.data(), observed.width,
-                                  observed.height, &error) != SNELL_IMAGE_OK)
-    throw SetupError(
-        fmt::format("{}: cannot write the heat map ({})", path.string(), error.message));
-  markWrittenFrom(temporary, digest);
-  std::filesystem::rename(temporary, path);
+  const bool written =
+      imageLibrary().writeHeatMap(temporary.c_str(), difference.data(), observed.width,
+                                  observed.height, &error) == SNELL_IMAGE_OK;
+  keepWrittenImage(temporary, path, digest, written ? nullptr : error.message, " the heat map");
 }
 
 }  // namespace snell

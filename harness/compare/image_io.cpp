@@ -4,6 +4,9 @@
 #include <unistd.h>
 
 #include <new>
+#include <string>
+#include <string_view>
+#include <system_error>
 
 #include "compare/image_library.h"
 #include "core/content_hash.h"
@@ -46,6 +49,27 @@ Image readImage(const fs::path& path) {
   }
 }
 
+void keepWrittenImage(const fs::path& temporary, const fs::path& path, const Digest& digest,
+                      const char* failure, std::string_view what) {
+  // OpenImageIO's PNG writer can report success for a file a full disk left
+  // empty; marked and kept, it would be taken as up to date by every later
+  // run.
+  std::error_code status;
+  const bool empty = !failure && fs::file_size(temporary, status) == 0;
+  std::string why = failure ? failure
+                    : empty ? "the file came out empty: is the disk full?"
+                            : status.message();
+  if (!failure && !empty && !status) {
+    markWrittenFrom(temporary, digest);
+    fs::rename(temporary, path, status);
+    if (!status) return;
+    why = status.message();
+  }
+  std::error_code ignored;
+  fs::remove(temporary, ignored);
+  throw SetupError(fmt::format("{}: cannot write{} ({})", path.string(), what, why));
+}
+
 void writeImageAtomically(const fs::path& path, const Image& image) {
   const bool png = path.extension() == ".png";
   ContentHash hash;
@@ -60,11 +84,10 @@ void writeImageAtomically(const fs::path& path, const Image& image) {
   fs::path temporary = path;
   temporary += fmt::format(".tmp{}{}", getpid(), path.extension().string());
   SnellImageError error;
-  if (imageLibrary().write(temporary.c_str(), image.pixels.data(), image.width, image.height, 4,
-                           png ? SNELL_IMAGE_SRGB8 : SNELL_IMAGE_FLOAT, &error) != SNELL_IMAGE_OK)
-    throw SetupError(fmt::format("{}: cannot write ({})", path.string(), error.message));
-  markWrittenFrom(temporary, digest);
-  fs::rename(temporary, path);
+  const bool written =
+      imageLibrary().write(temporary.c_str(), image.pixels.data(), image.width, image.height, 4,
+                           png ? SNELL_IMAGE_SRGB8 : SNELL_IMAGE_FLOAT, &error) == SNELL_IMAGE_OK;
+  keepWrittenImage(temporary, path, digest, written ? nullptr : error.message, "");
 }
 
 }  // namespace snell

@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstring>
+#include <system_error>
+
 #include "core/errors.h"
 
 namespace snell {
@@ -41,7 +45,15 @@ void writeFileAtomically(const fs::path& path, const std::string& text) {
                                    path.string()));
     out << text;
     out.flush();
-    if (!out) throw UsageError(fmt::format("{}: write failed (disk full?)", temporary.string()));
+    if (!out) {
+      const int failure = errno;
+      out.close();
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      throw UsageError(
+          fmt::format("{}: write failed ({}); free some space or name a file elsewhere",
+                      path.string(), std::strerror(failure)));
+    }
   }
   std::error_code error;
   fs::rename(temporary, path, error);

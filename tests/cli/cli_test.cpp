@@ -1,7 +1,9 @@
 // The `snell` command as a user runs it.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/mount.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cmath>
@@ -77,6 +79,69 @@ TEST(Cli, AFolderWithNoListingsIsExit2SayingSo) {
 // Outputs that cannot be written, or would land on one another, are
 // refused before any case runs: not after minutes of work, not as an
 // internal error, and with nothing left behind.
+// An --out folder on a read-only file system (or, for a user other than
+// root, one without write permission) is named before any case runs: its
+// first write came from a worker, as each image case's crash.
+TEST(Cli, AnOutFolderThatCannotBeWrittenIsExit2BeforeTheRun) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-ro-{}", ::getpid());
+  fs::create_directories(dir);
+  const bool root = ::geteuid() == 0;
+  if (root && ::mount("tmpfs", dir.c_str(), "tmpfs", MS_RDONLY, "size=64k") != 0) {
+    fs::remove(dir);
+    GTEST_SKIP() << "as root only a read-only mount is unwritable, and mount failed here";
+  }
+  if (!root) fs::permissions(dir, fs::perms::owner_read | fs::perms::owner_exec);
+  for (const std::string& out : {dir.string(), (dir / "new" / "sub").string()}) {
+    const Outcome o = snell("run --filter 'orange-book/14.1-fresnel/*' --backend gl --out " + out);
+    EXPECT_EQ(o.code, 2) << o.out;
+    EXPECT_NE(o.out.find(fmt::format("--out {}: folder {} is not writable", out, dir.string())),
+              std::string::npos)
+        << o.out;
+    EXPECT_EQ(o.out.find("[1/"), std::string::npos) << "a case ran:\n" << o.out;
+  }
+  if (root) ::umount(dir.c_str());
+  fs::permissions(dir, fs::perms::owner_all);
+  fs::remove_all(dir);
+}
+
+// A disk that fills during the run: the results file that cannot be
+// written is named (not its temporary) with the system's reason, and no
+// temporary file is left behind, of the results or of an image.
+TEST(Cli, AFullDiskLeavesNoTemporaryFiles) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-full-{}", ::getpid());
+  fs::create_directories(dir);
+  if (::mount("tmpfs", dir.c_str(), "tmpfs", 0, "size=256k") != 0) {
+    fs::remove(dir);
+    GTEST_SKIP() << "a small file system needs a tmpfs mount, which failed here";
+  }
+  const auto temporaries = [&] {
+    std::vector<std::string> found;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+      if (e.path().filename().string().find(".tmp") != std::string::npos)
+        found.push_back(e.path().string());
+    return found;
+  };
+  // Images of two cases do not fit in 256 KiB.
+  const Outcome images = snell(fmt::format(
+      "run --filter 'orange-book/14.1-fresnel/*' --backend gl --oracle-cache off --out {}/out",
+      dir.string()));
+  EXPECT_NE(images.out.find("cannot write"), std::string::npos) << images.out;
+  EXPECT_EQ(temporaries(), std::vector<std::string>{}) << images.out;
+  fs::remove_all(dir / "out");
+  std::ofstream(dir / "fill") << std::string(250 * 1024, 'x');
+  const Outcome results = snell(
+      fmt::format("run --filter 'orange-book/14.1-fresnel/sweep' --backend gl --json {}/r.jsonl",
+                  dir.string()));
+  EXPECT_EQ(results.code, 2) << results.out;
+  EXPECT_NE(results.out.find(
+                fmt::format("{}/r.jsonl: write failed (No space left on device)", dir.string())),
+            std::string::npos)
+      << results.out;
+  EXPECT_EQ(temporaries(), std::vector<std::string>{}) << results.out;
+  ::umount(dir.c_str());
+  fs::remove_all(dir);
+}
+
 TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-outputs-{}", ::getpid());
   fs::create_directories(dir / "folder");
