@@ -2,6 +2,8 @@
 // (core/manifest_draft.h), for the author to finish and run.
 #include <fmt/format.h>
 
+#include <filesystem>
+
 #include "cli/commands.h"
 #include "cli/shell_word.h"
 #include "core/errors.h"
@@ -52,12 +54,16 @@ Command addInitCommand(CLI::App& app) {
     const std::string dir = shellWord(options->dir);
     // An image case of a new listing fails on its missing golden wherever
     // the driver has goldens for other listings: blessing comes first.
+    // Their goldens go to a folder of the user's own: the default one is
+    // the catalog's, in snell's source tree.
+    const std::string golden = shellWord((std::filesystem::path(options->dir) / "golden").string());
     if (written.imageCases)
       fmt::print(
-          "wrote {}: fill in the lines marked FILL IN, then `snell bless --shaders {}` to write "
-          "the image cases' goldens (only images that match the CPU reference are blessed), and "
-          "`snell run --shaders {}`\n",
-          path, dir, dir);
+          "wrote {}: fill in the lines marked FILL IN, then `mkdir -p {} && snell bless --shaders "
+          "{} --golden {}` to write the image cases' goldens into a folder of your own (only "
+          "images that match the CPU reference are blessed), and `snell run --shaders {} "
+          "--golden {}`\n",
+          path, golden, dir, golden, dir, golden);
     else
       fmt::print("wrote {}: fill in the lines marked FILL IN, then run `snell run --shaders {}`\n",
                  path, dir);

@@ -11,6 +11,7 @@
 #include <future>
 #include <map>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include "backends/backend_registry.h"
@@ -157,6 +158,33 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
                "Vulkan: run under the Khronos validation layer; any message fails the case");
 }
 
+namespace {
+
+// The default golden folder is the catalog's, in snell's source tree. The
+// image cases of another --shaders folder (none of the catalog's has their id) keep
+// their goldens in a folder of their own: blessed there by default, they
+// would be written into snell's tree, and a run would fail each on a missing
+// golden with advice to do so.
+void requireOwnGoldenFolder(const SuiteOptions& options, const std::set<std::string>& imageCases) {
+  std::error_code error;
+  // The catalog itself: a listing new to it is blessed into its folder.
+  if (fs::equivalent(options.shaders, defaultShadersDir(), error)) return;
+  if (!fs::equivalent(options.golden, defaultGoldenDir(), error)) return;
+  std::vector<std::string> own;
+  for (const std::string& id : imageCases)
+    if (!fs::exists(fs::path(options.golden) / id, error)) own.push_back(id);
+  if (own.empty()) return;
+  throw UsageError(fmt::format(
+      "{} {} not among snell's catalog's cases: give --golden DIR, a folder of your own for "
+      "{} goldens (the default, {}, is the catalog's, in snell's source tree)",
+      fmt::join(own.begin(), own.begin() + std::min<std::size_t>(own.size(), 3), ", "),
+      own.size() > 3 ? fmt::format("and {} more are", own.size() - 3)
+                     : (own.size() == 1 ? "is" : "are"),
+      own.size() == 1 ? "its" : "their", defaultGoldenDir()));
+}
+
+}  // namespace
+
 SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compareGoldens) {
   requireDriverOptionsRead(splitBackendList(options.backend), options.device, options.glProvider);
   if (compareGoldens && !fs::is_directory(options.golden))
@@ -215,6 +243,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::vector<std::optional<CaseResult>> slots;
   std::vector<std::size_t> slotOfTask;
   bool drawsImages = false;
+  std::set<std::string> imageCaseIds;
   for (const std::string& backend : backends)
     for (const Case& c : run.cases) {
       if (const CasePattern* skip = run.expectations.of(backend).skip(c.id)) {
@@ -230,13 +259,17 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       slots.emplace_back();
       tasks.push_back(
           {c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
-      drawsImages = drawsImages || c.spec.has("image");
+      if (c.spec.has("image")) {
+        drawsImages = true;
+        imageCaseIds.insert(c.id);
+      }
     }
   run.planned = slots.size();
   // Only a case that will run needs the image module: one the shard, a skip
   // list or --resume leaves out does not, so a machine without OpenImageIO
   // can run the vector cases by skipping the image ones.
   if (drawsImages) requireImageLibraryFile();
+  requireOwnGoldenFolder(options, imageCaseIds);
 
   fs::create_directories(options.out);
   std::unique_ptr<StreamingFile> json;

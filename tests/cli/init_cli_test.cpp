@@ -80,9 +80,9 @@ TEST_F(InitCli, BadInputIsOneMessageAndExit2) {
 }
 
 // The next step the command names can be pasted as it is: the folder
-// quoted when it holds a space, and the goldens blessed first when the
-// draft has image cases (a new case with no golden fails where the driver
-// has goldens for other listings).
+// quoted when it holds a space, and the goldens blessed first, into a
+// folder of the user's own, when the draft has image cases (a new case with
+// no golden fails where the driver has goldens for other listings).
 TEST_F(InitCli, TheNextStepIsACommandThatWorksAsPrinted) {
   const fs::path folder = dir_ / "my listing";
   fs::create_directories(folder);
@@ -91,10 +91,14 @@ TEST_F(InitCli, TheNextStepIsACommandThatWorksAsPrinted) {
   fs::copy_file(listing / "refraction.frag", folder / "refraction.frag");
   const auto outcome = runSnell("init '" + folder.string() + "'");
   ASSERT_EQ(outcome.code, 0) << outcome.out;
-  EXPECT_NE(outcome.out.find("`snell bless --shaders '" + folder.string() + "'`"),
+  const std::string dir = "'" + folder.string() + "'";
+  const std::string golden = "'" + (folder / "golden").string() + "'";
+  EXPECT_NE(outcome.out.find("`mkdir -p " + golden + " && snell bless --shaders " + dir +
+                             " --golden " + golden + "`"),
             std::string::npos)
       << outcome.out;
-  EXPECT_NE(outcome.out.find("`snell run --shaders '" + folder.string() + "'`"), std::string::npos)
+  EXPECT_NE(outcome.out.find("`snell run --shaders " + dir + " --golden " + golden + "`"),
+            std::string::npos)
       << outcome.out;
   // The folder's name, space and all, is no id: the drafted one has '-'.
   EXPECT_NE(readText(folder / "manifest.toml").find("/my-listing\""), std::string::npos)
@@ -174,6 +178,16 @@ TEST_F(InitThenRun, ALearnOpenGLPairRunsAsDraftedOnceTheCitationIsFilledIn) {
   fillInCitation(
       listing,
       R"(file = "https://learnopengl.com/Advanced-OpenGL/Cubemaps", where = "Refraction")");
+  // Their goldens do not go to the catalog's folder in snell's source
+  // tree: without --golden the bless is refused, and writes nothing there.
+  const auto intoCatalog = runSnell("bless --backend gl --shaders " + (root_ / "shaders").string() +
+                                    " --out " + (root_ / "out").string());
+  EXPECT_EQ(intoCatalog.code, 2) << intoCatalog.out;
+  EXPECT_NE(intoCatalog.out.find("mine/refraction/sphere is not among snell's catalog's cases: "
+                                 "give --golden DIR, a folder of your own"),
+            std::string::npos)
+      << intoCatalog.out;
+  EXPECT_FALSE(fs::exists(SNELL_SOURCE_ROOT "/golden/mine"));
   EXPECT_EQ(runSnell("bless" + folders("gl,vk")).code, 0);
   const auto run = runSnell("run" + folders("gl,vk"));
   EXPECT_EQ(run.code, 0) << run.out;
