@@ -339,12 +339,19 @@ void captureSection(std::ostringstream& out, const DraftRequest& request, const 
   // Inputs are captured for the values computed from them: with none of
   // those left, nothing in the fragment stage would be checked.
   if (std::all_of(captures.begin(), captures.end(), isInput)) captures.clear();
-  if (outputs.empty() && captures.empty())
+  if (outputs.empty() && captures.empty()) {
+    // Outputs that were there but cannot be gated say why: a syntax error,
+    // an #include, a construct outside the derived oracle's subset.
+    if (!leftOut.empty())
+      throw UsageError(fmt::format("{}{}{}: nothing the derived oracle can gate: {}", vertex.file,
+                                   fragment ? " and " : "", fragment ? fragment->file : "",
+                                   fmt::join(leftOut, "; ")));
     throw UsageError(fmt::format(
         "{}{}{}: nothing to read back: the vertex stage declares no outputs and the fragment "
         "stage computes no vec3 before a texture lookup; write [capture] by hand "
         "(shaders/README.md)",
         vertex.file, fragment ? " and " : "", fragment ? fragment->file : ""));
+  }
   out << "\n[capture]\n";
   if (!outputs.empty()) {
     out << "# Every output of the vertex stage, read back and held against the derived\n"

@@ -108,6 +108,16 @@ class Lowering {
   }
 
  private:
+  static constexpr int kMaxNesting = 1000;
+  struct NestingGuard {
+    explicit NestingGuard(int& depth) : depth_(depth) { ++depth_; }
+    ~NestingGuard() { --depth_; }
+    NestingGuard(const NestingGuard&) = delete;
+    NestingGuard& operator=(const NestingGuard&) = delete;
+    int& depth_;
+  };
+  int nesting_ = 0;
+
   [[noreturn]] void refuse(const TIntermNode& node, const std::string& what) const {
     throw UsageError(builder_.unsupported(what, node.getLoc().line) + "; " + kAdvice);
   }
@@ -345,6 +355,12 @@ class Lowering {
 
   Value expression(TIntermTyped& node) {
     const int line = node.getLoc().line;
+    // Lowering recurses once per level of nesting: a generated expression
+    // thousands of operators long would overflow the stack. No listing
+    // nests anywhere near this deep.
+    const NestingGuard nested(nesting_);
+    if (nesting_ > kMaxNesting)
+      refuse(node, fmt::format("an expression nested more than {} deep", kMaxNesting));
     if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
       return constantValue(*constant);
     if (TIntermSymbol* symbol = node.getAsSymbolNode()) return read(*symbol);

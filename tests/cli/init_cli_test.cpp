@@ -79,6 +79,21 @@ TEST_F(InitCli, BadInputIsOneMessageAndExit2) {
   EXPECT_FALSE(fs::exists(dir_ / "manifest.toml"));
 }
 
+// A stage whose every output is refused says why (here glslang's syntax
+// error), not that the stage declares no outputs.
+TEST_F(InitCli, OutputsThatCannotBeGatedSayWhy) {
+  std::ofstream(dir_ / "a.vert") << "#version 330 core\nin vec3 aPos;\nout vec3 R;\n"
+                                    "void main() { R = aPos gl_Position = vec4(aPos, 1.0); }\n";
+  const auto outcome = runSnell("init " + dir_.string());
+  EXPECT_EQ(outcome.code, 2) << outcome.out;
+  EXPECT_NE(outcome.out.find("a.vert: nothing the derived oracle can gate: R (a.vert: glslang "
+                             "cannot compile the shader"),
+            std::string::npos)
+      << outcome.out;
+  EXPECT_NE(outcome.out.find("a.vert:4: '' :  syntax error"), std::string::npos) << outcome.out;
+  EXPECT_FALSE(fs::exists(dir_ / "manifest.toml"));
+}
+
 // The next step the command names can be pasted as it is: the folder
 // quoted when it holds a space, and the goldens blessed first, into a
 // folder of the user's own, when the draft has image cases (a new case with
