@@ -129,10 +129,28 @@ class ManifestReader {
     return node.is_floating_point() || node.is_integer();
   }
 
+  // A number as the shader's float: one that is not finite as a float (nan,
+  // inf, 1e300) or that rounds to 0 from a non-zero value (1e-50) is
+  // refused here, where it was written, not found as a case whose every
+  // component the spec leaves undefined.
+  float floatOf(const toml::node& node, const std::string& name) const {
+    const double value = *node.value<double>();
+    const float rounded = static_cast<float>(value);
+    if (!std::isfinite(rounded))
+      fail(lineOf(node), fmt::format("`{}`: {} is not a finite float (at most about 3.4e38); give "
+                                     "a finite number",
+                                     name, value));
+    if (rounded == 0.0f && value != 0.0)
+      fail(lineOf(node), fmt::format("`{}`: {} rounds to 0 as a float (the smallest is about "
+                                     "1.4e-45); give 0 or a larger number",
+                                     name, value));
+    return rounded;
+  }
+
   // A literal: a number, an array of 2-4 numbers (a vector), or
   // { type = "mat3", value = [...] } for the cases a length cannot tell.
   Value literal(const toml::node& node, const std::string& name) const {
-    if (numeric(node)) return Value{ValueType::Float, {static_cast<float>(*node.value<double>())}};
+    if (numeric(node)) return Value{ValueType::Float, {floatOf(node, name)}};
     ValueType type{};
     const toml::array* array = nullptr;
     if (const toml::table* typed = node.as_table()) {
@@ -170,7 +188,7 @@ class ManifestReader {
                                      glslTypeName(type), componentCount(type), array->size()));
     for (const toml::node& element : *array) {
       if (!numeric(element)) fail(lineOf(element), fmt::format("`{}`: not a number", name));
-      out.data.push_back(static_cast<float>(*element.value<double>()));
+      out.data.push_back(floatOf(element, name));
     }
     return out;
   }
@@ -374,6 +392,7 @@ class ManifestReader {
       for (const auto& [name, value] : *table) {
         if (!numeric(value))
           fail(lineOf(value), fmt::format("constant `{}` must be a number", name.str()));
+        floatOf(value, std::string(name.str()));  // kept as written: the decimal is folded
         m.constants[std::string(name.str())] = *value.value<double>();
       }
     }
@@ -450,10 +469,26 @@ class ManifestReader {
       spec.line = lineOf(node);
       spec.scene = requiredString(table, "scene", spec.line);
       spec.line = lineOf(*table.get("scene"));  // point messages at the scene, not the header
-      if (const toml::node* checks = table.get("checks"))
+      if (const toml::node* checks = table.get("checks")) {
         spec.checks = stringArray(*checks, "checks");
-      else
+        if (spec.checks.empty())
+          fail(lineOf(*checks),
+               "`checks` is empty: a case checks \"vectors\", \"image\" or "
+               "both (leave `checks` out for \"vectors\")");
+        for (std::size_t k = 1; k < spec.checks.size(); ++k)
+          if (std::find(spec.checks.begin(), spec.checks.begin() + k, spec.checks[k]) !=
+              spec.checks.begin() + k)
+            fail(lineOf(*checks), fmt::format("`checks` names \"{}\" twice", spec.checks[k]));
+      } else {
         spec.checks = {"vectors"};
+      }
+      // A case's id is the listing's id and its scene: two cases of one
+      // scene would be two results under one id.
+      for (const CaseSpec& earlier : m.cases)
+        if (earlier.scene == spec.scene)
+          fail(spec.line, fmt::format("a second [[case]] on scene \"{}\" (the first is at line "
+                                      "{}): a case's id is the listing's and its scene; keep one",
+                                      spec.scene, earlier.line));
       // Which names are known is the runner's registry (runner/checks/):
       // case validation says, before any driver loads.
       if (spec.has("image")) spec.image = imageTolerance(table, spec.line);
