@@ -1,4 +1,5 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fnmatch.h>
 
 #include <algorithm>
@@ -74,7 +75,7 @@ Command addSweepCommand(CLI::App& app) {
       "against exact Fresnel, or outside its physical range). The catalog's listings are drawn\n"
       "at the sweep's points on each driver (--listings). Exit 1 when an implementation\n"
       "break was found.");
-  return [options] {
+  return [options, sweep] {
     namespace fs = std::filesystem;
     if (!options->listingWorker.empty()) {
       BackendOptions backendOptions;
@@ -147,6 +148,19 @@ Command addSweepCommand(CLI::App& app) {
     fmt::print("wall time: {:.1f} s (sweep and classification {:.1f} s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                result.wallSeconds);
+    // Listings named with --listings (or all there is to sweep, with
+    // --no-builtins) of which none could be swept: the sweep checked nothing
+    // the user asked for, which exit 0 would vouch for.
+    const bool listingsNamed = sweep->count("--listings") > 0 && !options->listings.empty();
+    if ((listingsNamed || options->noBuiltins) && result.listings.swept.empty() &&
+        !result.listings.notSwept.empty()) {
+      std::vector<std::string> why;
+      for (const sweep::ListingNote& n : result.listings.notSwept)
+        why.push_back(n.listing + ": " + n.note);
+      fmt::print(stderr, "snell: no listing that --listings '{}' names could be swept: {}\n",
+                 options->listings, fmt::join(why, "; "));
+      return 2;
+    }
     bool implementation = false;
     for (const sweep::Break& b : result.breaks)
       implementation = implementation || b.cls == sweep::BreakClass::Implementation;

@@ -145,6 +145,20 @@ TEST(SweepCli, ATimeoutOutOfRangeSaysTheRange) {
   }
 }
 
+// Listings named with --listings of which none can be swept (here one that
+// reads back from the fragment stage only): the sweep checked nothing the
+// user asked for, and says why with exit 2, where it exited 0.
+TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2) {
+  const Outcome o = runSnell(
+      "sweep --quick --no-builtins --no-charts --backend gl --listings 'cs381/glass' --out "
+      "/tmp/snell-sweep-none");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("no listing that --listings 'cs381/glass' names could be swept: "
+                       "cs381/glass: reads back from the fragment stage only"),
+            std::string::npos)
+      << o.out;
+}
+
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
   const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
   EXPECT_EQ(o.code, 2) << o.out;
