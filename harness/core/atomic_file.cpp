@@ -22,16 +22,23 @@ StreamingFile::StreamingFile(fs::path path) : path_(std::move(path)) {
                                  partial_.string()));
 }
 
-StreamingFile::~StreamingFile() = default;  // an unfinished .partial stays for inspection
+StreamingFile::~StreamingFile() {
+  if (finished_ || lines_ > 0) return;
+  out_.close();
+  std::error_code ignored;
+  fs::remove(partial_, ignored);
+}
 
 void StreamingFile::writeLine(const std::string& line) {
   out_ << line << '\n';
   out_.flush();
+  ++lines_;
 }
 
 void StreamingFile::finish(const std::string& finalText) {
   out_.close();
   writeFileAtomically(path_, finalText);
+  finished_ = true;
   fs::remove(partial_);
 }
 

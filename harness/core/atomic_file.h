@@ -1,6 +1,7 @@
 #pragma once
 // Result files are never left half-written under their final name: they are
 // written beside it and renamed into place.
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -12,7 +13,10 @@ inline constexpr const char* kPartialSuffix = ".partial";
 
 // Streams records to "<path>.partial" as they come (flushed after each, so a
 // crash keeps what was finished); finish() puts the final text at `path`
-// atomically and removes the partial file.
+// atomically and removes the partial file. Left unfinished (the run stopped
+// on an error), a partial file that holds records stays for inspection and
+// --resume; one that holds none is removed, as it has nothing to resume and
+// would only stand in the way of the next run.
 class StreamingFile {
  public:
   explicit StreamingFile(std::filesystem::path path);
@@ -26,6 +30,8 @@ class StreamingFile {
  private:
   std::filesystem::path path_, partial_;
   std::ofstream out_;
+  std::size_t lines_ = 0;
+  bool finished_ = false;
 };
 
 // Writes the whole text to a temporary file and renames it over `path`.

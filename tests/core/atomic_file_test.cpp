@@ -55,5 +55,26 @@ TEST(AtomicFile, AFolderInTheWayIsAUsageErrorThatLeavesNothing) {
   fs::remove_all(dir);
 }
 
+// A run that stops on an error before its first record leaves no empty
+// FILE.partial (which the next run would take for a killed run's results);
+// one with records keeps them for --resume.
+TEST(StreamingFile, AnUnfinishedFileKeepsItsPartialOnlyWhenItHoldsRecords) {
+  const fs::path dir = scratch();
+  { StreamingFile empty(dir / "empty.jsonl"); }
+  EXPECT_FALSE(fs::exists(dir / "empty.jsonl.partial"));
+  {
+    StreamingFile some(dir / "some.jsonl");
+    some.writeLine("{\"case\":\"a\"}");
+  }
+  EXPECT_EQ(text(dir / "some.jsonl.partial"), "{\"case\":\"a\"}\n");
+  {
+    StreamingFile done(dir / "done.jsonl");
+    done.finish("all\n");
+  }
+  EXPECT_EQ(text(dir / "done.jsonl"), "all\n");
+  EXPECT_FALSE(fs::exists(dir / "done.jsonl.partial"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace snell
