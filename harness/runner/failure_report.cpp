@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/glsl_declarations.h"
+#include "core/pixel_mask.h"
 
 namespace snell {
 namespace {
@@ -100,10 +101,30 @@ std::string nothingCheckedReasons(const Manifest& m, const CaseResult& result) {
           m.maxUndefinedFraction, m.path.filename().string());
     }
   }
-  for (const ImageComparison& image : result.images)
-    if (image.compared == 0 && image.problem.empty())
+  for (const ImageComparison& image : result.images) {
+    if (!image.problem.empty()) continue;
+    if (image.compared == 0) {
       reasons +=
           fmt::format("image against {}: nothing compared: every pixel is masked\n", image.against);
+      continue;
+    }
+    // The object's pixels where the listing is undefined are masked; the
+    // background is compared all the same, so an image whose object is all
+    // undefined would pass on its background alone. max_undefined holds
+    // for pixels as for components.
+    std::size_t all = image.compared, undefined = 0;
+    for (const auto& [reason, count] : image.masked) {
+      all += count;
+      if (reason == pixelMaskName(PixelMask::Undefined)) undefined += count;
+    }
+    if (static_cast<double>(undefined) > m.maxUndefinedFraction * static_cast<double>(all))
+      reasons += fmt::format(
+          "image against {}: the spec leaves {} of {} pixels ({:.2f}%) undefined, more than "
+          "max_undefined = {} allows; change the scene, or raise max_undefined in {} if the "
+          "listing means it\n",
+          image.against, undefined, all, 100.0 * static_cast<double>(undefined) / all,
+          m.maxUndefinedFraction, m.path.filename().string());
+  }
   return reasons;
 }
 
