@@ -65,6 +65,29 @@ TEST_F(OracleCacheCli, AFolderThatCannotBeMadeIsSaidAndTheRunGoesOn) {
   EXPECT_NE(outcome.out.find("none kept"), std::string::npos) << outcome.out;
 }
 
+// CI runs into a fresh --out every time: the store keeps what such a run
+// computes once, and the next one adds nothing (the decoded images it keeps
+// are keyed by the image files' bytes, which are the pixels alone).
+TEST_F(OracleCacheCli, RunsIntoFreshOutFoldersKeepNothingNew) {
+  const std::string store = (dir_ / "store").string();
+  const auto entries = [&] {
+    std::size_t n = 0;
+    for (const auto& e : fs::recursive_directory_iterator(store))
+      if (e.path().extension() == ".result") ++n;
+    return n;
+  };
+  std::vector<std::size_t> counts;
+  for (const char* out : {"out1", "out2", "out3"}) {
+    const auto outcome = runSnell(fmt::format(
+        "run --backend gl,vk --filter 'orange-book/14.1-fresnel/sphere' --out {} --oracle-cache {}",
+        (dir_ / out).string(), store));
+    ASSERT_EQ(outcome.code, 0) << outcome.out;
+    counts.push_back(entries());
+  }
+  EXPECT_EQ(counts[1], counts[0]) << "the second run kept new entries";
+  EXPECT_EQ(counts[2], counts[0]) << "the third run kept new entries";
+}
+
 // A run on the same driver as the one before needs no image module at all:
 // its pictures, comparisons and decoded images are what that run kept. The
 // module is replaced by a file of the same name, size and time that cannot

@@ -40,6 +40,13 @@ SnellImageStatus guarded(SnellImageError* error, Body body) {
 // files a little larger.
 void fastPng(OIIO::ImageBuf& buffer) { buffer.specmod().attribute("png:compressionLevel", 1); }
 
+// OpenImageIO stamps the time of writing into an EXR's capDate unless a
+// DateTime is given: the same pixels would make different bytes on every
+// write, and what is kept by the bytes of an image file (the decoded images
+// of the oracle cache) would be kept anew by every run into a fresh --out,
+// never to be read again. Empty, the file is the pixels alone.
+void sameBytesForSamePixels(OIIO::ImageBuf& buffer) { buffer.specmod().attribute("DateTime", ""); }
+
 OIIO::ImageBuf floatBuffer(const float* pixels, int width, int height, int channels) {
   OIIO::ImageBuf buffer(OIIO::ImageSpec(width, height, channels, OIIO::TypeDesc::FLOAT));
   buffer.set_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, channels), OIIO::TypeDesc::FLOAT,
@@ -78,8 +85,10 @@ SnellImageStatus write(const char* path, const float* pixels, int width, int hei
     if (srgb8) {
       buffer = OIIO::ImageBufAlgo::colorconvert(buffer, "linear", "sRGB");
       fastPng(buffer);
-    } else
+    } else {
       buffer.specmod().attribute("compression", "zip");
+      sameBytesForSamePixels(buffer);
+    }
     if (!buffer.write(path, srgb8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT))
       return report(error, SNELL_IMAGE_CANNOT_WRITE, buffer.geterror());
     return SNELL_IMAGE_OK;
@@ -116,6 +125,7 @@ SnellImageStatus writeHeatMap(const char* path, const float* values, int width, 
       for (int x = 0; x < width; ++x)
         if (values[static_cast<std::size_t>(y) * width + x] < 0) heat.setpixel(x, y, grey, 3);
     fastPng(heat);
+    sameBytesForSamePixels(heat);
     if (!heat.write(path)) return report(error, SNELL_IMAGE_CANNOT_WRITE, heat.geterror());
     return SNELL_IMAGE_OK;
   });
