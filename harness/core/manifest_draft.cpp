@@ -409,6 +409,14 @@ scene  = "torus"
 checks = ["vectors"]
 )";
   if (!hasFragment) {
+    out << R"(
+# A sphere scaled unevenly: its normal matrix is no rotation, so a normal
+# used without normalize() is off here, where the sphere's and the torus's
+# are unit already.
+[[case]]
+scene  = "stretched"
+checks = ["vectors"]
+)";
     out << "\n# No fragment stage, so no image to compare; add one to `stages` for an image "
            "case.\n";
     return;
@@ -424,6 +432,15 @@ checks = ["vectors"]
 # A listing whose colour is not one texture lookup needs its own derivation.
 [[case]]
 scene  = "sphere"
+checks = ["vectors", "image"]
+image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
+
+# A sphere scaled unevenly: its normal matrix is no rotation, so a normal
+# used without normalize() is off here, where the sphere's and the torus's
+# are unit already. The derived oracle follows the listing's own text: the
+# image against its golden is what shows such a change.
+[[case]]
+scene  = "stretched"
 checks = ["vectors", "image"]
 image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
 )";
