@@ -491,7 +491,14 @@ class ManifestReader {
                                       spec.scene, earlier.line));
       // Which names are known is the runner's registry (runner/checks/):
       // case validation says, before any driver loads.
-      if (spec.has("image")) spec.image = imageTolerance(table, spec.line);
+      if (spec.has("image")) {
+        // The picture is the fragment stage's output: a listing of one
+        // vertex stage has none to compare.
+        if (m.fragmentFile.empty())
+          fail(spec.line, "an image check needs a fragment stage: add `fragment` to `stages`, or "
+                          "check \"vectors\" only");
+        spec.image = imageTolerance(table, spec.line);
+      }
       m.cases.push_back(std::move(spec));
     }
     return m;
