@@ -18,11 +18,19 @@ constexpr const char* kFileName = "libsnell_image_library.so";
 }  // namespace
 
 const SnellImageLibraryFunctions& openImageLibrary(const std::vector<std::string>& candidates) {
-  const SharedLibrary library =
-      SharedLibrary::open(candidates,
-                          "snell reads, writes and compares images through this module: build it "
-                          "(cmake --build build --target snell_image_library), or set "
-                          "SNELL_IMAGE_LIBRARY to its path.");
+  // A module that is there but does not load (a library it needs is
+  // missing, or memory is short: ulimit -v) is not fixed by building it.
+  bool present = false;
+  for (const std::string& candidate : candidates)
+    present = present || std::filesystem::is_regular_file(candidate);
+  const SharedLibrary library = SharedLibrary::open(
+      candidates,
+      present ? "snell reads, writes and compares images through this module, which is there but "
+                "does not load: `ldd` on it names a library it lacks; a memory limit (ulimit -v) "
+                "can also keep its libraries from mapping."
+              : "snell reads, writes and compares images through this module: build it (cmake "
+                "--build build --target snell_image_library), or set SNELL_IMAGE_LIBRARY to its "
+                "path.");
   const auto entry = reinterpret_cast<SnellImageLibraryEntryPoint>(
       library.symbol(SNELL_IMAGE_LIBRARY_ENTRY_POINT));
   if (!entry)
@@ -55,7 +63,8 @@ void requireImageLibraryFile() {
   throw SetupError(fmt::format(
       "the image cases need snell's image module, and none of these files exists:{}\n"
       "build it (cmake --build build --target snell_image_library), set SNELL_IMAGE_LIBRARY "
-      "to its path, or leave the image cases out with --filter",
+      "to its path, or leave the image cases out (--filter, or a skip list given with "
+      "--expectations)",
       tried));
 }
 

@@ -27,6 +27,23 @@ TEST(ImageModuleCli, AMissingModuleIsOneSetUpErrorBeforeAnyCase) {
   EXPECT_EQ(outcome.out.find("[1/"), std::string::npos) << "no case ran:\n" << outcome.out;
 }
 
+// A module file that is there but does not load is not fixed by building
+// it: the message says what else to look at.
+TEST(ImageModuleCli, AModuleThatIsThereButDoesNotLoadIsNotToBeBuilt) {
+  namespace fs = std::filesystem;
+  const fs::path fake =
+      fs::temp_directory_path() / ("snell-not-a-module-" + std::to_string(getpid()) + ".so");
+  std::ofstream(fake) << "not a shared library\n";
+  const auto outcome =
+      runSnell("run --backend gl --filter 'orange-book/14.1-fresnel/sphere' --oracle-cache off",
+               "SNELL_IMAGE_LIBRARY=" + fake.string());
+  fs::remove(fake);
+  EXPECT_NE(outcome.code, 0) << outcome.out;
+  EXPECT_NE(outcome.out.find("which is there but does not load: `ldd` on it"), std::string::npos)
+      << outcome.out;
+  EXPECT_EQ(outcome.out.find("build it"), std::string::npos) << outcome.out;
+}
+
 TEST(ImageModuleCli, ARunWithoutImageCasesNeedsNone) {
   const auto outcome = runSnell(
       "run --backend gl --filter 'orange-book/14.1-fresnel/sweep' --oracle-cache off", kNoModule);
