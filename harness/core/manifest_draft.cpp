@@ -279,8 +279,11 @@ std::vector<Capture> fragmentCaptures(const Stage& fragment, std::vector<std::st
   std::size_t lastLookup = 0;
   for (std::size_t k = 0; k < statements.size(); ++k)
     if (lookup(statements[k])) lastLookup = k + 1;
+  // Declared with a value: `vec3 refr;` holds nothing yet at its line (and
+  // in the per-channel chromatic pattern it is a colour its channels' lookups
+  // fill in, not a direction).
   static const std::regex kVec3Local(
-      R"(^(const\s+)?((highp|mediump|lowp)\s+)?vec3\s+([A-Za-z_]\w*)\s*(=|$))");
+      R"(^(const\s+)?((highp|mediump|lowp)\s+)?vec3\s+([A-Za-z_]\w*)\s*=)");
   std::vector<Capture> inputs, locals;
   // Statements before the last lookup's own (which makes a colour).
   for (std::size_t k = 0; k + 1 < lastLookup; ++k) {

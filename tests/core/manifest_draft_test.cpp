@@ -156,10 +156,13 @@ TEST_F(ManifestDraft, LearnOpenGlRefractionBindsWithoutRenaming) {
                                                                   {"Normal", ValueType::Vec3, 14},
                                                                   {"I", ValueType::Vec3, 13},
                                                                   {"R", ValueType::Vec3, 14}}));
-  ASSERT_EQ(m.cases.size(), 2u);
+  ASSERT_EQ(m.cases.size(), 3u);
   EXPECT_EQ(m.cases[0].checks, std::vector<std::string>{"vectors"});
   EXPECT_EQ(m.cases[1].checks, (std::vector<std::string>{"vectors", "image"}));
   EXPECT_EQ(m.cases[1].image.fail, 0.004);
+  // The stretched sphere, whose normal matrix is no rotation.
+  EXPECT_EQ(m.cases[2].scene, "stretched");
+  EXPECT_EQ(m.cases[2].checks, (std::vector<std::string>{"vectors", "image"}));
   EXPECT_NE(m.cases[0].scene, m.cases[1].scene);  // case ids stay unique
   expectRunnable(m);
 }
@@ -175,6 +178,49 @@ TEST_F(ManifestDraft, ALookedUpColourIsNotCaptured) {
   const Manifest m = draftAndLoad();
   EXPECT_TRUE(m.captureFragment.empty()) << m.captureFragment.size();
   EXPECT_EQ(m.captureVertex, (std::vector<std::string>{"Reflect", "Refract", "Ratio"}));
+  expectRunnable(m);
+}
+
+// The per-channel chromatic pattern: `vec3 refr;` is declared empty and
+// filled channel by channel from lookups. It is a colour, and at its line it
+// holds nothing: it is not captured (a capture there made a draft that
+// `snell run` refused), and the vertex stage's directions are.
+TEST_F(ManifestDraft, AColourFilledChannelByChannelIsNotCaptured) {
+  put("chroma.vert", R"(#version 450
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform vec3 cameraPos;
+uniform float eta;
+layout (location = 0) out vec3 RefractR;
+layout (location = 1) out vec3 RefractB;
+void main() {
+  vec4 world = model * vec4(aPos, 1.0);
+  vec3 N = normalize(mat3(model) * aNormal);
+  vec3 I = normalize(world.xyz - cameraPos);
+  RefractR = refract(I, N, eta);
+  RefractB = refract(I, N, eta * 1.02);
+  gl_Position = projection * view * world;
+}
+)");
+  put("chroma.frag", R"(#version 450
+layout (location = 0) in vec3 RefractR;
+layout (location = 1) in vec3 RefractB;
+layout (binding = 0) uniform samplerCube skybox;
+layout (location = 0) out vec4 FragColor;
+void main() {
+  vec3 refr;
+  refr.r = texture(skybox, RefractR).r;
+  refr.g = 0.0;
+  refr.b = texture(skybox, RefractB).b;
+  FragColor = vec4(refr, 1.0);
+}
+)");
+  const Manifest m = draftAndLoad("0.66");
+  EXPECT_TRUE(m.captureFragment.empty()) << m.captureFragment.size();
+  EXPECT_EQ(m.captureVertex, (std::vector<std::string>{"RefractR", "RefractB"}));
   expectRunnable(m);
 }
 
@@ -251,7 +297,9 @@ void main() {
   EXPECT_EQ(semantic(m.uniforms, "normalMatrix"), "model_normal_matrix");
   EXPECT_EQ(semantic(m.uniforms, "weird"), "normal_matrix");  // the author's fill
   EXPECT_EQ(m.fragmentFile, "");
-  ASSERT_EQ(m.cases.size(), 1u);  // no fragment stage: no image case
+  ASSERT_EQ(m.cases.size(), 2u);  // no fragment stage: no image case
+  EXPECT_EQ(m.cases[1].scene, "stretched");
+  EXPECT_EQ(m.cases[1].checks, std::vector<std::string>{"vectors"});
 }
 
 TEST_F(ManifestDraft, UnreadDeclarationsAreLeftOutAndSaidSo) {

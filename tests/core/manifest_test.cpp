@@ -225,10 +225,13 @@ TEST_F(ManifestTest, AnIdThatWouldLeaveItsFolderIsRefused) {
 // TOML's nan and inf are numbers; a tolerance or a time limit must be a
 // finite one in its range, and a line number one that fits.
 TEST_F(ManifestTest, NumbersOutOfTheirRangeNameTheirLine) {
-  const std::string withImage = std::string(kValid) +
-                                "checks = [\"vectors\", \"image\"]\n"
-                                "image = { fail = 0.004, warn = 0.002, failpercent = 0.0, "
-                                "hardfail = 0.05 }\n";
+  // An image is the fragment stage's: the listing has one here.
+  std::string withImage = std::string(kValid) +
+                          "checks = [\"vectors\", \"image\"]\n"
+                          "image = { fail = 0.004, warn = 0.002, failpercent = 0.0, "
+                          "hardfail = 0.05 }\n";
+  withImage.replace(withImage.find("vertex = \"a.vert\""), 17,
+                    "vertex = \"a.vert\", fragment = \"a.frag\"");
   EXPECT_EQ(loadManifest(write(withImage)).cases[0].image.fail, 0.004);
   for (const auto& [from, to, expected] :
        std::vector<std::tuple<std::string, std::string, std::string>>{
