@@ -410,8 +410,14 @@ class ManifestReader {
     const toml::table& capture = requiredTable(root, "capture", 1);
     onlyKeys(capture, {"vertex", "fragment"}, "`capture`");
     m.captureLine = lineOf(capture);
-    if (const toml::node* vertex = capture.get("vertex"))
+    if (const toml::node* vertex = capture.get("vertex")) {
       m.captureVertex = stringArray(*vertex, "capture.vertex");
+      for (std::size_t k = 1; k < m.captureVertex.size(); ++k)
+        if (std::find(m.captureVertex.begin(), m.captureVertex.begin() + k, m.captureVertex[k]) !=
+            m.captureVertex.begin() + k)
+          fail(lineOf(*vertex),
+               fmt::format("`capture.vertex` names `{}` twice", m.captureVertex[k]));
+    }
     if (const toml::node* fragment = capture.get("fragment"))
       m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
     // A hand-written oracle mirrors one stage; the derived oracle follows
@@ -495,9 +501,14 @@ class ManifestReader {
         // The picture is the fragment stage's output: a listing of one
         // vertex stage has none to compare.
         if (m.fragmentFile.empty())
-          fail(spec.line, "an image check needs a fragment stage: add `fragment` to `stages`, or "
-                          "check \"vectors\" only");
+          fail(spec.line,
+               "an image check needs a fragment stage: add `fragment` to `stages`, or "
+               "check \"vectors\" only");
         spec.image = imageTolerance(table, spec.line);
+      } else if (const toml::node* image = table.get("image")) {
+        fail(lineOf(*image),
+             "`image` tolerances on a case that does not check \"image\": add "
+             "\"image\" to its `checks`, or drop `image`");
       }
       m.cases.push_back(std::move(spec));
     }

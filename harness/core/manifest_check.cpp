@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <optional>
+#include <regex>
 
 #include "core/errors.h"
 #include "core/glsl_declarations.h"
@@ -72,7 +73,6 @@ void checkLegacyBinding(const Manifest& m, const Binding& b, bool uniform,
                     manifest, b.line, b.name, glslTypeName(builtin->type), components));
 }
 
-
 bool identifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Occurrences of `name` as a whole identifier in `code` (comments blanked).
@@ -123,6 +123,21 @@ void checkEveryReadDeclarationIsBound(const Manifest& m, const ProgramSource& pr
 
 }  // namespace
 
+namespace {
+
+// The name of the uniform block (`uniform Camera { ... };`, with or without
+// a layout) that declares `member`, or "" when none does.
+std::string uniformBlockHolding(const std::string& source, const std::string& member) {
+  static const std::regex kBlock(R"(\buniform\s+([A-Za-z_]\w*)\s*\{([^}]*)\})");
+  const std::regex kMember("\\b" + member + "\\s*(\\[[^\\]]*\\]\\s*)?;");
+  for (auto it = std::sregex_iterator(source.begin(), source.end(), kBlock);
+       it != std::sregex_iterator(); ++it)
+    if (std::regex_search((*it)[2].first, (*it)[2].second, kMember)) return (*it)[1].str();
+  return "";
+}
+
+}  // namespace
+
 void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program,
                                  const ResolvedBindings& bindings) {
   const std::string manifest = m.path.string();
@@ -132,19 +147,31 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
 
   for (const Binding& b : m.uniforms) {
     if (legacyName(b.name) && b.apiDefault)
-      throw UsageError(fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
-                                   "listing's own uniforms and inputs; bind a scene semantic",
-                                   manifest, b.line, b.name));
+      throw UsageError(
+          fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
+                      "listing's own uniforms and inputs; bind a scene semantic",
+                      manifest, b.line, b.name));
     if (legacyName(b.name)) {
       checkLegacyBinding(m, b, true, bindings);
       continue;
     }
     const auto declared = find(all, {"uniform"}, b.name);
-    if (!declared)
-      throw UsageError(fmt::format("{}:{}: uniform `{}` is not declared in {}{}{}; check the "
-                                   "spelling against the listing",
-                                   manifest, b.line, b.name, m.vertexFile,
-                                   m.fragmentFile.empty() ? "" : " or ", m.fragmentFile));
+    if (!declared) {
+      // `cam.eta`, `Camera.eta` or `eta` of `uniform Camera { float eta; }`.
+      const std::string member = b.name.substr(b.name.find('.') + 1);
+      for (const std::string* source : {&program.vertex, &program.fragment})
+        if (const std::string block = uniformBlockHolding(*source, member); !block.empty())
+          throw UsageError(fmt::format(
+              "{}:{}: `{}` is a member of the uniform block `{}`: [uniforms] binds uniforms "
+              "declared outside a block only; declare it outside the block, or give the listing "
+              "a hand-written oracle (manifest `oracle`)",
+              manifest, b.line, member, block));
+      throw UsageError(
+          fmt::format("{}:{}: uniform `{}` is not declared in {}{}{}; check the "
+                      "spelling against the listing",
+                      manifest, b.line, b.name, m.vertexFile, m.fragmentFile.empty() ? "" : " or ",
+                      m.fragmentFile));
+    }
     auto bound = bindings.uniforms.find(b.name);
     if (bound == bindings.uniforms.end()) {
       if (declared->type.rfind("sampler", 0) != 0)
@@ -153,40 +180,43 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
       continue;
     }
     if (declared->type != glslTypeName(bound->second.type))
-      throw UsageError(fmt::format("{}:{}: `{}` is declared {} but bound to a {}", manifest,
-                                   b.line, b.name, declared->type,
-                                   glslTypeName(bound->second.type)));
+      throw UsageError(fmt::format("{}:{}: `{}` is declared {} but bound to a {}", manifest, b.line,
+                                   b.name, declared->type, glslTypeName(bound->second.type)));
   }
   for (const Binding& b : m.inputs) {
     if (legacyName(b.name) && b.apiDefault)
-      throw UsageError(fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
-                                   "listing's own uniforms and inputs; bind a scene semantic",
-                                   manifest, b.line, b.name));
+      throw UsageError(
+          fmt::format("{}:{}: `{}` is fixed-function state: \"default\" is for the "
+                      "listing's own uniforms and inputs; bind a scene semantic",
+                      manifest, b.line, b.name));
     if (legacyName(b.name)) {
       checkLegacyBinding(m, b, false, bindings);
       continue;
     }
     const auto declared = find(vertex, {"in", "attribute"}, b.name);
     if (!declared)
-      throw UsageError(fmt::format("{}:{}: input `{}` is not declared in {}; check the spelling "
-                                   "against the listing",
-                                   manifest, b.line, b.name, m.vertexFile));
+      throw UsageError(
+          fmt::format("{}:{}: input `{}` is not declared in {}; check the spelling "
+                      "against the listing",
+                      manifest, b.line, b.name, m.vertexFile));
     if (b.apiDefault) continue;
     const int components = bindings.attributes.at(b.name).components;
     const bool fits = (declared->type == "float" && components == 1) ||
                       (declared->type.size() == 4 && declared->type.rfind("vec", 0) == 0 &&
                        declared->type[3] - '0' <= components);
     if (!fits)
-      throw UsageError(fmt::format("{}:{}: input `{}` is declared {} but its semantic gives {} "
-                                   "components",
-                                   manifest, b.line, b.name, declared->type, components));
+      throw UsageError(
+          fmt::format("{}:{}: input `{}` is declared {} but its semantic gives {} "
+                      "components",
+                      manifest, b.line, b.name, declared->type, components));
   }
   checkEveryReadDeclarationIsBound(m, program);
   for (const std::string& name : m.captureVertex)
     if (!find(vertex, {"out", "varying"}, name))
-      throw UsageError(fmt::format("{}:{}: capture.vertex names `{}`, which {} does not declare "
-                                   "as an output",
-                                   manifest, m.captureLine, name, m.vertexFile));
+      throw UsageError(
+          fmt::format("{}:{}: capture.vertex names `{}`, which {} does not declare "
+                      "as an output",
+                      manifest, m.captureLine, name, m.vertexFile));
 }
 
 }  // namespace snell
