@@ -108,7 +108,9 @@ void requireNothingToResumeIsLost(const SuiteOptions& options) {
     std::error_code error;
     const bool resumingIt =
         !options.resume.empty() && fs::equivalent(options.resume, partial, error);
-    if (fs::exists(partial, error) && !resumingIt)
+    // An empty one (a run killed before its first result) has nothing to
+    // lose.
+    if (fs::exists(partial, error) && fs::file_size(partial, error) > 0 && !error && !resumingIt)
       throw UsageError(fmt::format(
           "{} holds the results of a run that was killed: go on with it (--resume {} --json {}), "
           "or remove it to start again",
@@ -242,7 +244,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::vector<Task> tasks;
   std::vector<std::optional<CaseResult>> slots;
   std::vector<std::size_t> slotOfTask;
-  bool drawsImages = false;
+  bool drawsImages = false, resumedImages = false;
   std::set<std::string> imageCaseIds;
   for (const std::string& backend : backends)
     for (const Case& c : run.cases) {
@@ -252,6 +254,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       }
       const auto done = resumed.find(backend + " " + c.id);
       if (done != resumed.end()) {
+        // Its image is compared with the other backends' after the run.
+        resumedImages = resumedImages || c.spec.has("image");
         slots.emplace_back(std::move(done->second));
         continue;
       }
@@ -265,10 +269,11 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       }
     }
   run.planned = slots.size();
-  // Only a case that will run needs the image module: one the shard, a skip
-  // list or --resume leaves out does not, so a machine without OpenImageIO
-  // can run the vector cases by skipping the image ones.
-  if (drawsImages) requireImageLibraryFile();
+  // Only an image case that will run, or one resumed whose image is still
+  // to be compared across APIs, needs the image module: one the shard or a
+  // skip list leaves out does not, so a machine without OpenImageIO can run
+  // the vector cases by skipping the image ones.
+  if (drawsImages || resumedImages) requireImageLibraryFile();
   requireOwnGoldenFolder(options, imageCaseIds);
 
   fs::create_directories(options.out);

@@ -74,7 +74,8 @@ Command addSweepCommand(CLI::App& app) {
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"
       "against exact Fresnel, or outside its physical range). The catalog's listings are drawn\n"
       "at the sweep's points on each driver (--listings). Exit 1 when an implementation\n"
-      "break was found.");
+      "break was found; 2 when none of the listings --listings names (or, with --no-builtins,\n"
+      "no listing at all) could be swept, each with its reason.");
   return [options, sweep] {
     namespace fs = std::filesystem;
     if (!options->listingWorker.empty()) {
@@ -148,25 +149,32 @@ Command addSweepCommand(CLI::App& app) {
     fmt::print("wall time: {:.1f} s (sweep and classification {:.1f} s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                result.wallSeconds);
-    // Listings named with --listings (or all there is to sweep, with
-    // --no-builtins) of which none could be swept: the sweep checked nothing
-    // the user asked for, which exit 0 would vouch for.
+    bool implementation = false;
+    for (const sweep::Break& b : result.breaks)
+      implementation = implementation || b.cls == sweep::BreakClass::Implementation;
+    for (const sweep::ListingBreak& b : result.listings.breaks)
+      implementation = implementation || b.cls == sweep::BreakClass::Implementation;
+    if (implementation) return 1;
+    // Listings named with --listings of which none could be swept, or, with
+    // --no-builtins, no listing swept at all: exit 0 would vouch for what
+    // was not checked.
     const bool listingsNamed = sweep->count("--listings") > 0 && !options->listings.empty();
     if ((listingsNamed || options->noBuiltins) && result.listings.swept.empty() &&
         !result.listings.notSwept.empty()) {
       std::vector<std::string> why;
       for (const sweep::ListingNote& n : result.listings.notSwept)
         why.push_back(n.listing + ": " + n.note);
-      fmt::print(stderr, "snell: no listing that --listings '{}' names could be swept: {}\n",
-                 options->listings, fmt::join(why, "; "));
+      fmt::print(stderr, "snell: {}: {}\n",
+                 listingsNamed ? fmt::format("no listing that --listings '{}' names could be "
+                                             "swept{}",
+                                             options->listings,
+                                             options->noBuiltins ? "" : " (the built-ins were)")
+                               : "nothing was swept: --no-builtins leaves the listings, and none "
+                                 "of them could be",
+                 fmt::join(why, "; "));
       return 2;
     }
-    bool implementation = false;
-    for (const sweep::Break& b : result.breaks)
-      implementation = implementation || b.cls == sweep::BreakClass::Implementation;
-    for (const sweep::ListingBreak& b : result.listings.breaks)
-      implementation = implementation || b.cls == sweep::BreakClass::Implementation;
-    return implementation ? 1 : 0;
+    return 0;
   };
 }
 

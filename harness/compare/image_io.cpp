@@ -53,7 +53,7 @@ void keepWrittenImage(const fs::path& temporary, const fs::path& path, const Dig
                       const char* failure, std::string_view what) {
   // OpenImageIO's PNG writer can report success for a file a full disk left
   // empty; marked and kept, it would be taken as up to date by every later
-  // run.
+  // run. Only an empty file is caught here: one cut short part way is not.
   std::error_code status;
   const bool empty = !failure && fs::file_size(temporary, status) == 0;
   std::string why = failure ? failure

@@ -106,7 +106,10 @@ StoreTrim trimKeyedFileStore(const fs::path& dir, std::uintmax_t maxBytes) {
     std::error_code inner;
     for (auto it = fs::directory_iterator(folder->path(), inner);
          !inner && it != fs::directory_iterator(); it.increment(inner)) {
-      if (!it->is_regular_file(inner)) continue;
+      // Each file's own error: one another trim removed meanwhile is passed
+      // over, and the folder's other files are still read.
+      std::error_code file;
+      if (!it->is_regular_file(file)) continue;
       const fs::path& path = it->path();
       switch (kindOf(folderName, path.filename().string())) {
         case StoreFile::Foreign:
@@ -114,13 +117,16 @@ StoreTrim trimKeyedFileStore(const fs::path& dir, std::uintmax_t maxBytes) {
         case StoreFile::Temporary: {
           // A write that was interrupted; one older than a day belongs to
           // no running process.
-          const auto age = fs::file_time_type::clock::now() - it->last_write_time(inner);
-          if (!inner && age > std::chrono::hours(24) && fs::remove(path, inner)) ++trim.removed;
+          const auto age = fs::file_time_type::clock::now() - it->last_write_time(file);
+          if (!file && age > std::chrono::hours(24) && fs::remove(path, file)) ++trim.removed;
           break;
         }
-        case StoreFile::Entry:
-          entries.push_back({path, it->last_write_time(inner), it->file_size(inner)});
+        case StoreFile::Entry: {
+          const auto used = it->last_write_time(file);
+          const auto size = file ? 0 : it->file_size(file);
+          if (!file) entries.push_back({path, used, size});
           break;
+        }
       }
     }
   }

@@ -128,6 +128,9 @@ namespace {
 // The name of the uniform block (`uniform Camera { ... };`, with or without
 // a layout) that declares `member`, or "" when none does.
 std::string uniformBlockHolding(const std::string& source, const std::string& member) {
+  // A TOML key can be any text: only an identifier can be a member.
+  static const std::regex kIdentifier(R"([A-Za-z_]\w*)");
+  if (!std::regex_match(member, kIdentifier)) return "";
   static const std::regex kBlock(R"(\buniform\s+([A-Za-z_]\w*)\s*\{([^}]*)\})");
   const std::regex kMember("\\b" + member + "\\s*(\\[[^\\]]*\\]\\s*)?;");
   for (auto it = std::sregex_iterator(source.begin(), source.end(), kBlock);
@@ -163,8 +166,8 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
         if (const std::string block = uniformBlockHolding(*source, member); !block.empty())
           throw UsageError(fmt::format(
               "{}:{}: `{}` is a member of the uniform block `{}`: [uniforms] binds uniforms "
-              "declared outside a block only; declare it outside the block, or give the listing "
-              "a hand-written oracle (manifest `oracle`)",
+              "declared outside a block only, and snell sets no block's members; declare it "
+              "outside the block",
               manifest, b.line, member, block));
       throw UsageError(
           fmt::format("{}:{}: uniform `{}` is not declared in {}{}{}; check the "

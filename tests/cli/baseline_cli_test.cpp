@@ -322,6 +322,14 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
       fmt::format("{} --resume {}.partial --json {}", rest, killed.string(), killed.string()));
   EXPECT_EQ(goesOn.code, 1) << goesOn.out;  // the endless case times out
   EXPECT_EQ(records(killed).size(), 4u);
+  // An empty one (killed before its first result) has nothing to lose: the
+  // run goes ahead.
+  const fs::path empty = scratch / "empty.jsonl";
+  std::ofstream(fs::path(empty.string() + ".partial")).flush();
+  const Outcome overEmpty = snell(fmt::format("{} --json {}", rest, empty.string()));
+  EXPECT_EQ(overEmpty.out.find("holds the results of a run that was killed"), std::string::npos)
+      << overEmpty.out;
+  EXPECT_EQ(records(empty).size(), 4u);
 }
 
 }  // namespace

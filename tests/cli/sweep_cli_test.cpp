@@ -157,6 +157,14 @@ TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2) {
                        "cs381/glass: reads back from the fragment stage only"),
             std::string::npos)
       << o.out;
+  // With the built-ins swept beside them, the message says so.
+  const Outcome withBuiltins = runSnell(
+      "sweep --quick --no-charts --backend gl --listings 'cs381/glass' --out "
+      "/tmp/snell-sweep-none");
+  EXPECT_EQ(withBuiltins.code, 2) << withBuiltins.out;
+  EXPECT_NE(withBuiltins.out.find("names could be swept (the built-ins were): cs381/glass"),
+            std::string::npos)
+      << withBuiltins.out;
 }
 
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {

@@ -25,7 +25,7 @@ class GlBackend final : public Backend {
         core_(createGlContext(config_.provider, request(Profile::Core))) {
     core_.makeCurrent();
     info_ = queryGlDriverInfo();
-    const char* gallium = std::getenv("GALLIUM_DRIVER");
+    const char* gallium = config_.setsGalliumDriver ? nullptr : std::getenv("GALLIUM_DRIVER");
     if (std::string why = whyNotTheNamedDriver(config_.name, config_.rendererPrefix, info_,
                                                gallium ? gallium : "");
         !why.empty())

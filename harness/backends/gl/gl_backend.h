@@ -19,6 +19,9 @@ struct GlBackendConfig {
   // What GL_RENDERER starts with on the driver the name stands for
   // (gl_named_driver.h); empty: any driver (gl:gpu).
   std::string rendererPrefix;
+  // Whether the backend's own environment sets GALLIUM_DRIVER: then a
+  // value there is snell's, not one the user left to unset.
+  bool setsGalliumDriver = false;
 };
 
 std::unique_ptr<Backend> makeGlBackend(const GlBackendConfig& config);

@@ -12,7 +12,8 @@ namespace snell {
 
 // Empty when `got`'s renderer starts with `rendererPrefix` (an empty
 // prefix takes any driver); else why the backend cannot run, and what to do.
-// `gallium` is the GALLIUM_DRIVER the context was made under ("" unset).
+// `gallium` is a GALLIUM_DRIVER the user set ("" when unset, or when the
+// backend's own environment sets it).
 std::string whyNotTheNamedDriver(const std::string& backend, const std::string& rendererPrefix,
                                  const DriverInfo& got, const std::string& gallium);
 

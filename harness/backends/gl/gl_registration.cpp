@@ -2,6 +2,8 @@
 // and the environment their worker sets before the driver loads.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "backends/backend_registry.h"
 #include "backends/gl/egl_context.h"
 #include "backends/gl/gl_backend.h"
@@ -51,8 +53,11 @@ BackendEntry glEntry(std::string name, std::string description, GlProviderKind p
   e.takesDevice = provider == GlProviderKind::EglDevice;
   e.takesGlProvider = provider != GlProviderKind::EglDevice;
   e.make = [provider, rendererPrefix](const BackendEntry& entry, const BackendOptions& options) {
+    const bool setsGallium =
+        std::any_of(entry.environment.begin(), entry.environment.end(),
+                    [](const auto& variable) { return variable.first == "GALLIUM_DRIVER"; });
     return makeGlBackend({entry.name, providerFor(entry, provider, options), entry.capabilities,
-                          options.device, rendererPrefix});
+                          options.device, rendererPrefix, setsGallium});
   };
   return e;
 }
