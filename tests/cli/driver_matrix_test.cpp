@@ -163,6 +163,35 @@ TEST_F(DriverMatrix, AnOsmesaDriverItCannotLoadIsExit2Too) {
   EXPECT_EQ(o.out.find("Crash"), std::string::npos) << o.out;
 }
 
+// A backend's name is its driver, and its goldens and expectations are
+// kept under that name: Mesa's variables left in the environment that
+// choose another driver refuse it, naming the variable and the backend for
+// that driver, where gl ran softpipe (or 128-bit llvmpipe) under llvmpipe's
+// goldens.
+TEST_F(DriverMatrix, AVariableThatChoosesAnotherDriverRefusesTheBackend) {
+  const Outcome softpipe =
+      snell(runArgs("gl", "orange-book/14.1-fresnel/*"), "GALLIUM_DRIVER=softpipe");
+  EXPECT_EQ(softpipe.code, 2) << softpipe.out;
+  EXPECT_NE(softpipe.out.find("gl is llvmpipe, but its context came up on softpipe"),
+            std::string::npos)
+      << softpipe.out;
+  EXPECT_NE(softpipe.out.find("GALLIUM_DRIVER=softpipe chose it; unset it"), std::string::npos)
+      << softpipe.out;
+  EXPECT_TRUE(softpipe.byBackend.empty());
+  const Outcome narrow =
+      snell(runArgs("gl", "orange-book/14.1-fresnel/*"), "LP_NATIVE_VECTOR_WIDTH=128");
+  EXPECT_EQ(narrow.code, 2) << narrow.out;
+  EXPECT_NE(narrow.out.find("LP_NATIVE_VECTOR_WIDTH=128 is set in the environment"),
+            std::string::npos)
+      << narrow.out;
+  EXPECT_NE(narrow.out.find("gl:llvmpipe-128"), std::string::npos) << narrow.out;
+  // The backends named for those drivers run as before.
+  EXPECT_EQ(
+      snell(runArgs("gl:softpipe", "orange-book/14.1-fresnel/sweep"), "GALLIUM_DRIVER=softpipe")
+          .code,
+      0);
+}
+
 TEST_F(DriverMatrix, UnknownBackendNamesTheKnownOnes) {
   const Outcome o = snell("run --backend gl:nosuch");
   EXPECT_EQ(o.code, 2) << o.out;

@@ -1,5 +1,7 @@
 #include "backends/gl/gl_backend.h"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <iterator>
 #include <memory>
@@ -30,6 +32,13 @@ class GlBackend final : public Backend {
                                                gallium ? gallium : "");
         !why.empty())
       throw SetupError(why);
+    const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
+    if (width && *width && !config_.setsVectorWidth &&
+        info_.renderer.find("llvmpipe") != std::string::npos)
+      throw SetupError(fmt::format(
+          "{} is llvmpipe at its native vector width, and LP_NATIVE_VECTOR_WIDTH={} is set in the "
+          "environment ({}): unset it, or run the backend named for that width (gl:llvmpipe-128)",
+          config_.name, width, info_.renderer));
   }
 
   std::string name() const override { return config_.name; }

@@ -22,6 +22,9 @@ struct GlBackendConfig {
   // Whether the backend's own environment sets GALLIUM_DRIVER: then a
   // value there is snell's, not one the user left to unset.
   bool setsGalliumDriver = false;
+  // Whether it sets LP_NATIVE_VECTOR_WIDTH: llvmpipe at another width is
+  // another driver (gl:llvmpipe-128), with goldens of its own.
+  bool setsVectorWidth = false;
 };
 
 std::unique_ptr<Backend> makeGlBackend(const GlBackendConfig& config);

@@ -53,11 +53,13 @@ BackendEntry glEntry(std::string name, std::string description, GlProviderKind p
   e.takesDevice = provider == GlProviderKind::EglDevice;
   e.takesGlProvider = provider != GlProviderKind::EglDevice;
   e.make = [provider, rendererPrefix](const BackendEntry& entry, const BackendOptions& options) {
-    const bool setsGallium =
-        std::any_of(entry.environment.begin(), entry.environment.end(),
-                    [](const auto& variable) { return variable.first == "GALLIUM_DRIVER"; });
+    const auto sets = [&](const char* name) {
+      return std::any_of(entry.environment.begin(), entry.environment.end(),
+                         [&](const auto& variable) { return variable.first == name; });
+    };
     return makeGlBackend({entry.name, providerFor(entry, provider, options), entry.capabilities,
-                          options.device, rendererPrefix, setsGallium});
+                          options.device, rendererPrefix, sets("GALLIUM_DRIVER"),
+                          sets("LP_NATIVE_VECTOR_WIDTH")});
   };
   return e;
 }
