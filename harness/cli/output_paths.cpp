@@ -1,6 +1,7 @@
 #include "cli/output_paths.h"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -104,6 +105,18 @@ void checkFolder(const OutputPath& folder) {
     throw UsageError(fmt::format("{} {}: folder {} is not writable ({}); name a writable folder",
                                  folder.option, folder.path.string(), existing.string(),
                                  std::strerror(errno)));
+  // Some folders take no new entries whatever their mode says (/proc, /sys):
+  // the first missing part is made and removed again, so the command that
+  // makes it after its work cannot fail then.
+  if (!parts.firstMissing.empty()) {
+    if (::mkdir(parts.firstMissing.c_str(), 0777) == 0) {
+      ::rmdir(parts.firstMissing.c_str());
+    } else if (errno != EEXIST) {  // EEXIST: another process made it meanwhile; theirs to keep
+      throw UsageError(fmt::format("{} {}: cannot make folder {} ({}); name another folder",
+                                   folder.option, folder.path.string(), parts.firstMissing.string(),
+                                   std::strerror(errno)));
+    }
+  }
 }
 
 std::string named(const OutputPath& output, const fs::path& id) {

@@ -160,7 +160,11 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
            {fmt::format("--json {0}/file/r.jsonl", d), "/file is a file, not a folder"},
            {fmt::format("--json {0}/folder", d), "/folder: is a folder"},
            {fmt::format("--junit {0}/no-such/r.xml", d), "/no-such does not exist"},
-           {fmt::format("--out {0}/file", d), "/file is a file, not a folder"}}) {
+           {fmt::format("--out {0}/file", d), "/file is a file, not a folder"},
+           // A folder that takes no new entries whatever its mode says.
+           {"--out /proc/snell-no-such/sub",
+            "--out /proc/snell-no-such/sub: cannot make folder "
+            "/proc/snell-no-such"}}) {
     const Outcome o = snell(run + " " + args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
