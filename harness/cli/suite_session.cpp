@@ -244,8 +244,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::vector<Task> tasks;
   std::vector<std::optional<CaseResult>> slots;
   std::vector<std::size_t> slotOfTask;
-  bool drawsImages = false, resumedImages = false;
-  std::set<std::string> imageCaseIds;
+  bool resumedImages = false;
+  std::set<std::string> imageCaseIds;  // of the cases that will draw
   for (const std::string& backend : backends)
     for (const Case& c : run.cases) {
       if (const CasePattern* skip = run.expectations.of(backend).skip(c.id)) {
@@ -263,16 +263,14 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       slots.emplace_back();
       tasks.push_back(
           {c.id, backend, options.timeout > 0 ? options.timeout : c.manifest->timeoutSeconds});
-      if (c.spec.has("image")) {
-        drawsImages = true;
-        imageCaseIds.insert(c.id);
-      }
+      if (c.spec.has("image")) imageCaseIds.insert(c.id);
     }
   run.planned = slots.size();
   // Only an image case that will run, or one resumed whose image is still
   // to be compared across APIs, needs the image module: one the shard or a
   // skip list leaves out does not, so a machine without OpenImageIO can run
   // the vector cases by skipping the image ones.
+  const bool drawsImages = !imageCaseIds.empty();
   if (drawsImages || resumedImages) requireImageLibraryFile();
   requireOwnGoldenFolder(options, imageCaseIds);
 

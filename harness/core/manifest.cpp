@@ -18,6 +18,14 @@
 namespace snell {
 namespace {
 
+// The first name a list gives a second time, or null.
+const std::string* firstRepeated(const std::vector<std::string>& names) {
+  for (std::size_t k = 1; k < names.size(); ++k)
+    if (std::find(names.begin(), names.begin() + k, names[k]) != names.begin() + k)
+      return &names[k];
+  return nullptr;
+}
+
 namespace fs = std::filesystem;
 
 // A line number (capture, compile_error) past int's range is no file's line;
@@ -412,11 +420,8 @@ class ManifestReader {
     m.captureLine = lineOf(capture);
     if (const toml::node* vertex = capture.get("vertex")) {
       m.captureVertex = stringArray(*vertex, "capture.vertex");
-      for (std::size_t k = 1; k < m.captureVertex.size(); ++k)
-        if (std::find(m.captureVertex.begin(), m.captureVertex.begin() + k, m.captureVertex[k]) !=
-            m.captureVertex.begin() + k)
-          fail(lineOf(*vertex),
-               fmt::format("`capture.vertex` names `{}` twice", m.captureVertex[k]));
+      if (const std::string* again = firstRepeated(m.captureVertex))
+        fail(lineOf(*vertex), fmt::format("`capture.vertex` names `{}` twice", *again));
     }
     if (const toml::node* fragment = capture.get("fragment"))
       m.captureFragment = fragmentCaptures(*fragment, m.fragmentFile.empty());
@@ -481,10 +486,8 @@ class ManifestReader {
           fail(lineOf(*checks),
                "`checks` is empty: a case checks \"vectors\", \"image\" or "
                "both (leave `checks` out for \"vectors\")");
-        for (std::size_t k = 1; k < spec.checks.size(); ++k)
-          if (std::find(spec.checks.begin(), spec.checks.begin() + k, spec.checks[k]) !=
-              spec.checks.begin() + k)
-            fail(lineOf(*checks), fmt::format("`checks` names \"{}\" twice", spec.checks[k]));
+        if (const std::string* again = firstRepeated(spec.checks))
+          fail(lineOf(*checks), fmt::format("`checks` names \"{}\" twice", *again));
       } else {
         spec.checks = {"vectors"};
       }

@@ -20,24 +20,36 @@ const DriverInfo kZink =
 const DriverInfo kNvidia = parseGlDriverInfo("4.6.0 NVIDIA 580.159.04", "NVIDIA H200/PCIe/SSE2");
 
 TEST(GlNamedDriver, TheNamedDriverRuns) {
-  EXPECT_EQ(whyNotTheNamedDriver("gl", "llvmpipe", kLlvmpipe, ""), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl", "llvmpipe", kLlvmpipe, {}), "");
   // gl:softpipe and gl:zink set GALLIUM_DRIVER themselves: no user value.
-  EXPECT_EQ(whyNotTheNamedDriver("gl:softpipe", "softpipe", kSoftpipe, ""), "");
-  EXPECT_EQ(whyNotTheNamedDriver("gl:zink", "zink", kZink, ""), "");
-  EXPECT_EQ(whyNotTheNamedDriver("gl:gpu", "", kNvidia, ""), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:softpipe", "softpipe", kSoftpipe, {}), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:zink", "zink", kZink, {}), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:gpu", "", kNvidia, {}), "");
 }
 
 TEST(GlNamedDriver, AnotherMesaDriverNamesTheVariableThatChoseIt) {
-  const std::string why = whyNotTheNamedDriver("gl", "llvmpipe", kSoftpipe, "softpipe");
+  const std::string why = whyNotTheNamedDriver("gl", "llvmpipe", kSoftpipe, {"softpipe", ""});
   EXPECT_NE(why.find("gl is llvmpipe, but its context came up on softpipe"), std::string::npos)
       << why;
   EXPECT_NE(why.find("GALLIUM_DRIVER=softpipe chose it; unset it"), std::string::npos) << why;
-  EXPECT_NE(whyNotTheNamedDriver("gl:zink", "zink", kLlvmpipe, "").find("`snell devices`"),
+  EXPECT_NE(whyNotTheNamedDriver("gl:zink", "zink", kLlvmpipe, {}).find("`snell devices`"),
             std::string::npos);
 }
 
+// llvmpipe at a width the user chose is not the backend's driver either.
+TEST(GlNamedDriver, AVectorWidthTheUserSetIsSentToItsOwnBackend) {
+  const DriverInfo narrow =
+      parseGlDriverInfo("4.5 (Core Profile) Mesa 22.3.6", "llvmpipe (LLVM 15.0.6, 128 bits)");
+  const std::string why = whyNotTheNamedDriver("gl", "llvmpipe", narrow, {"", "128"});
+  EXPECT_NE(why.find("LP_NATIVE_VECTOR_WIDTH=128 is set in the environment"), std::string::npos)
+      << why;
+  EXPECT_NE(why.find("gl:llvmpipe-128"), std::string::npos) << why;
+  EXPECT_EQ(whyNotTheNamedDriver("gl:llvmpipe-128", "llvmpipe", narrow, {}), "");
+  EXPECT_EQ(whyNotTheNamedDriver("gl:softpipe", "softpipe", kSoftpipe, {"", "128"}), "");
+}
+
 TEST(GlNamedDriver, AnotherVendorsDriverIsSentToGlGpu) {
-  const std::string why = whyNotTheNamedDriver("gl:zink", "zink", kNvidia, "");
+  const std::string why = whyNotTheNamedDriver("gl:zink", "zink", kNvidia, {});
   EXPECT_NE(why.find("gl:zink is zink, but its context came up on NVIDIA H200/PCIe/SSE2 "
                      "(OpenGL 4.6.0 NVIDIA 580.159.04)"),
             std::string::npos)

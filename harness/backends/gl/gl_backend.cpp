@@ -1,7 +1,5 @@
 #include "backends/gl/gl_backend.h"
 
-#include <fmt/format.h>
-
 #include <cstdlib>
 #include <iterator>
 #include <memory>
@@ -27,18 +25,16 @@ class GlBackend final : public Backend {
         core_(createGlContext(config_.provider, request(Profile::Core))) {
     core_.makeCurrent();
     info_ = queryGlDriverInfo();
-    const char* gallium = config_.setsGalliumDriver ? nullptr : std::getenv("GALLIUM_DRIVER");
-    if (std::string why = whyNotTheNamedDriver(config_.name, config_.rendererPrefix, info_,
-                                               gallium ? gallium : "");
+    const auto user = [](bool ownVariable, const char* name) {
+      const char* value = ownVariable ? nullptr : std::getenv(name);
+      return std::string(value ? value : "");
+    };
+    if (std::string why =
+            whyNotTheNamedDriver(config_.name, config_.rendererPrefix, info_,
+                                 {user(config_.setsGalliumDriver, "GALLIUM_DRIVER"),
+                                  user(config_.setsVectorWidth, "LP_NATIVE_VECTOR_WIDTH")});
         !why.empty())
       throw SetupError(why);
-    const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
-    if (width && *width && !config_.setsVectorWidth &&
-        info_.renderer.find("llvmpipe") != std::string::npos)
-      throw SetupError(fmt::format(
-          "{} is llvmpipe at its native vector width, and LP_NATIVE_VECTOR_WIDTH={} is set in the "
-          "environment ({}): unset it, or run the backend named for that width (gl:llvmpipe-128)",
-          config_.name, width, info_.renderer));
   }
 
   std::string name() const override { return config_.name; }

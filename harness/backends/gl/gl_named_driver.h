@@ -10,11 +10,17 @@
 
 namespace snell {
 
+// The variables a user left in the environment that choose among Mesa's
+// drivers ("" when unset, or when the backend's own environment sets them).
+struct UserDriverVariables {
+  std::string galliumDriver;  // GALLIUM_DRIVER
+  std::string vectorWidth;    // LP_NATIVE_VECTOR_WIDTH
+};
+
 // Empty when `got`'s renderer starts with `rendererPrefix` (an empty
-// prefix takes any driver); else why the backend cannot run, and what to do.
-// `gallium` is a GALLIUM_DRIVER the user set ("" when unset, or when the
-// backend's own environment sets it).
+// prefix takes any driver) and no user variable changed the driver; else
+// why the backend cannot run, and what to do.
 std::string whyNotTheNamedDriver(const std::string& backend, const std::string& rendererPrefix,
-                                 const DriverInfo& got, const std::string& gallium);
+                                 const DriverInfo& got, const UserDriverVariables& user);
 
 }  // namespace snell
