@@ -1,7 +1,9 @@
 #include "runner/interrupt_flag.h"
 
 #include <pthread.h>
+#include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 
 namespace snell {
@@ -9,6 +11,19 @@ namespace {
 
 volatile std::sig_atomic_t received = 0;
 pthread_t owner;
+bool stderrIsTerminal = false;
+// A signal this process passed on to the owner thread (below), which its
+// handler takes as the same signal, not as a second one.
+std::atomic<int> forwarded{0};
+static_assert(std::atomic<int>::is_always_lock_free, "used in a signal handler");
+
+void say(const char* text, std::size_t size) {
+  const ssize_t ignored = ::write(STDERR_FILENO, text, size);
+  (void)ignored;
+}
+
+constexpr char kFirstHint[] =
+    "\nsnell: stopping after the work in hand; Ctrl-C again stops at once\n";
 
 // The kernel hands a process's signal to any thread that does not block
 // it: one of eval's pool threads or a driver's. The thread that made the
@@ -16,8 +31,21 @@ pthread_t owner;
 // the signal is passed on to it (pthread_kill is async-signal-safe).
 void record(int signal) {
   const int savedErrno = errno;
+  const bool onOwner = pthread_equal(pthread_self(), owner);
+  if (onOwner && forwarded.exchange(0) != 0) {
+    errno = savedErrno;
+    return;
+  }
+  if (received != 0) {
+    say(kStoppedAtOnceMessage, sizeof kStoppedAtOnceMessage - 1);
+    ::_exit(128 + signal);
+  }
   received = signal;
-  if (!pthread_equal(pthread_self(), owner)) pthread_kill(owner, signal);
+  if (stderrIsTerminal) say(kFirstHint, sizeof kFirstHint - 1);
+  if (!onOwner) {
+    forwarded.store(1);
+    pthread_kill(owner, signal);
+  }
   errno = savedErrno;
 }
 
@@ -25,7 +53,9 @@ void record(int signal) {
 
 InterruptFlag::InterruptFlag() {
   received = 0;
+  forwarded.store(0);
   owner = pthread_self();
+  stderrIsTerminal = ::isatty(STDERR_FILENO) == 1;
   struct sigaction action {};
   action.sa_handler = record;
   sigemptyset(&action.sa_mask);

@@ -2,6 +2,8 @@
 // SIGINT and SIGTERM while a run is going: the handler only records the
 // signal; the supervisor sees it, stops its workers and returns what
 // finished, so the caller can still write the results and a summary.
+// A second signal is the user's "now": the process says so on stderr and
+// exits at once with 128 + the signal, without finishing what it writes.
 #include <csignal>
 
 namespace snell {
@@ -24,5 +26,9 @@ class InterruptFlag {
  private:
   struct sigaction previousInt_, previousTerm_;
 };
+
+// The line stderr gets on the second signal (for the tests).
+inline constexpr char kStoppedAtOnceMessage[] =
+    "snell: a second interrupt: stopped at once; files being written may be incomplete\n";
 
 }  // namespace snell
