@@ -1,5 +1,6 @@
 #include "cli/output_paths.h"
 
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -54,6 +55,22 @@ void checkFile(const OutputPath& file) {
         fmt::format("{} {}: folder {} is not writable; name a file in a writable "
                     "folder",
                     file.option, file.path.string(), folder.string()));
+  // To root, access() says yes where no file can be made (/proc, a
+  // read-only mount): one is made there and removed, as the file itself
+  // will be written (beside it, then renamed).
+  const fs::path probe =
+      folder / fmt::format(".{}.probe-{}", fs::path(file.path).filename().string(), getpid());
+  const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  const int error = fd < 0 ? errno : 0;
+  if (fd < 0 && error != EEXIST)
+    throw UsageError(
+        fmt::format("{} {}: no file can be made in folder {} ({}); name a file in a "
+                    "writable folder",
+                    file.option, file.path.string(), folder.string(), std::strerror(error)));
+  if (fd >= 0) {
+    close(fd);
+    unlink(probe.c_str());
+  }
 }
 
 // A folder path split where it stops existing: its nearest part that

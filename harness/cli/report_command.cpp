@@ -10,7 +10,9 @@
 
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "cli/output_paths.h"
+#include "core/errors.h"
 #include "report/html_report.h"
 
 namespace snell::cli {
@@ -30,10 +32,14 @@ Command addReportCommand(CLI::App& app) {
                   "Results files (snell run --json or merge), shown side by side in this order")
       ->required()
       ->check(CLI::ExistingFile);
-  sub->add_option("-o,--out", options->out, "Folder to write index.html to")->required();
+  sub->add_option("-o,--out", options->out, "Folder to write index.html to")
+      ->required()
+      ->check(nonEmptyPath());
   sub->add_option("--images", options->images,
                   "The last run's --out folder: its rendered images and references (default: "
-                  "snell-out)");
+                  "snell-out)")
+      ->check(nonEmptyPath())
+      ->check(CLI::ExistingDirectory);
   sub->add_option("--shaders", options->shaders, "Folder of listings (titles, fail thresholds)")
       ->check(CLI::ExistingDirectory);
   sub->add_option("--sweep", options->sweep,
@@ -43,6 +49,15 @@ Command addReportCommand(CLI::App& app) {
   return [options] {
     const auto start = std::chrono::steady_clock::now();
     checkOutputs({}, {{"-o", options->out}});
+    const std::filesystem::path page = std::filesystem::path(options->out) / "index.html";
+    for (const std::string& file : options->results) {
+      std::error_code error;
+      if (std::filesystem::equivalent(page, file, error))
+        throw UsageError(
+            fmt::format("{}: is the page this report would write (-o {}); give the "
+                        "report another folder",
+                        file, options->out));
+    }
     std::vector<ReportRun> runs;
     for (const std::string& file : options->results)
       runs.push_back({file, readFinishedResultsFile(file)});

@@ -35,6 +35,7 @@
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/interrupt_flag.h"
+#include "runner/open_file_budget.h"
 #include "runner/oracle_store/oracle_store.h"
 #include "runner/supervisor.h"
 
@@ -85,6 +86,33 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options) {
 
 namespace {
 
+// -j, or one worker per core, fitted to the open-file limit: an asked -j
+// that does not fit is refused before the run starts; the default is
+// lowered, saying so.
+int workersForRun(int asked) {
+  const int wanted =
+      asked > 0 ? asked : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const WorkerFit fit = fitWorkersToOpenFileLimit(wanted);
+  if (fit.workers == wanted) return wanted;
+  const std::string limits =
+      fit.hardLimit < 0 ? fmt::format("the open-file limit is {} (ulimit -n)", fit.limit)
+                        : fmt::format("the open-file limit is {} (ulimit -n; hard limit {})",
+                                      fit.limit, fit.hardLimit);
+  if (fit.workers == 0)
+    throw UsageError(fmt::format(
+        "not even one worker fits: {}, and a run keeps {} open files of its own and {} per "
+        "worker; raise the limit (ulimit -n 1024)",
+        limits, kDescriptorsKeptForTheRun, kDescriptorsPerWorker));
+  if (asked > 0)
+    throw UsageError(
+        fmt::format("-j {}: {}, and each worker keeps {} open; use -j {} or less, or "
+                    "raise the limit",
+                    asked, limits, kDescriptorsPerWorker, fit.workers));
+  fmt::print(stderr, "snell: {} worker{}, not one per core ({}): {}\n", fit.workers,
+             fit.workers == 1 ? "" : "s", wanted, limits);
+  return fit.workers;
+}
+
 // The folder of stored oracle results the workers use, made here; empty for
 // none. One that cannot be made costs speed, not results: said once, and
 // the oracle computes everything.
@@ -119,6 +147,9 @@ void requireNothingToResumeIsLost(const SuiteOptions& options) {
   if (options.resume.empty() || options.resume.ends_with(kPartialSuffix)) return;
   ResultsFileState state;
   const std::vector<CaseResult> records = readResultsFile(options.resume, &state);
+  // A run interrupted before its first result wrote none, and says to go
+  // on with it: that is running every case.
+  if (records.empty()) return;
   if (!state.incomplete && state.tornLine == 0)
     throw UsageError(fmt::format(
         "--resume {}: a finished run ({} records, none marked incomplete), so nothing to go on "
@@ -274,6 +305,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (drawsImages || resumedImages) requireImageLibraryFile();
   requireOwnGoldenFolder(options, imageCaseIds);
 
+  const int workers = workersForRun(options.jobs);
+
   fs::create_directories(options.out);
   std::unique_ptr<StreamingFile> json;
   if (!options.json.empty()) json = std::make_unique<StreamingFile>(options.json);
@@ -292,9 +325,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       fmt::format("{}-{}", ::getpid(), std::chrono::system_clock::now().time_since_epoch().count());
   supervisor.outDir = fs::absolute(options.out).string();
   supervisor.goldenDir = compareGoldens ? fs::absolute(options.golden).string() : "";
-  supervisor.jobs = options.jobs > 0
-                        ? options.jobs
-                        : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  supervisor.jobs = workers;
   supervisor.stop = interrupt.flag();
   run.oracleStore = oracleStoreFor(options);
   supervisor.oracleStore = run.oracleStore;

@@ -332,4 +332,41 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
   EXPECT_EQ(records(empty).size(), 4u);
 }
 
+// What a run or report writes is checked before the work: --junit in a
+// folder where no file can be made (/proc, which root's access() calls
+// writable) was refused only after every case had run; a report would
+// write its page over the results file it was reading; and a run stopped
+// before its first result, which says to go on with --resume, was refused
+// as "a finished run".
+TEST(BaselineCli, OutputsAreCheckedBeforeTheWorkAndAnEmptyRunCanBeResumed) {
+  Scratch scratch;
+  const std::string one = "--backend gl --filter 'orange-book/14.1-fresnel/sweep'";
+  const Outcome junit = snell(fmt::format("run {} --out {} --junit /proc/snell-junit.xml", one,
+                                          (scratch / "out").string()));
+  EXPECT_EQ(junit.code, 2) << junit.out;
+  EXPECT_NE(junit.out.find("--junit /proc/snell-junit.xml: no file can be made in folder /proc"),
+            std::string::npos)
+      << junit.out;
+  EXPECT_EQ(junit.out.find("Pass"), std::string::npos) << "ran before refusing: " << junit.out;
+
+  const fs::path empty = scratch / "stopped.jsonl";
+  std::ofstream(empty).close();
+  const Outcome resumed =
+      snell(fmt::format("run {} --out {} --json {} --resume {}", one, (scratch / "out").string(),
+                        empty.string(), empty.string()));
+  EXPECT_EQ(resumed.code, 0) << resumed.out;
+  EXPECT_EQ(records(empty).size(), 1u);
+
+  fs::create_directories(scratch / "page");
+  const fs::path page = scratch / "page" / "index.html";
+  fs::copy_file(empty, page);
+  const std::string before = readText(page);
+  const Outcome report =
+      snell(fmt::format("report {} -o {}", page.string(), (scratch / "page").string()));
+  EXPECT_EQ(report.code, 2) << report.out;
+  EXPECT_NE(report.out.find("is the page this report would write"), std::string::npos)
+      << report.out;
+  EXPECT_EQ(readText(page), before) << "the results file was written over";
+}
+
 }  // namespace

@@ -43,6 +43,7 @@ std::map<std::string, nlohmann::json> resultsByKey(const fs::path& file) {
   return out;
 }
 
+using snell::testing::runSnell;
 using snell::testing::spawnSnell;
 
 int exitCode(pid_t pid) {
@@ -180,6 +181,36 @@ TEST(Isolation, WorkersStartedAfterTheBinaryIsReplacedAreStillThisBuild) {
   for (const auto& [key, result] : results)
     EXPECT_EQ(result["status"], "Pass") << key << ": " << result["message"];
   fs::remove_all(dir);
+}
+
+// A -j past the open-file limit failed part way through the run with "Too
+// many open files": it is refused before anything is written, naming the
+// -j that fits, and that -j runs. A soft limit below the hard one is raised
+// as far as the workers need.
+TEST(Isolation, JobsPastTheOpenFileLimitAreRefusedNamingTheJobsThatFit) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-jobs-{}", ::getpid());
+  fs::remove_all(out);
+  const std::string run =
+      fmt::format("--out {} --filter 'blog/chromatic/sphere' --backend vk", out.string());
+  const auto refused = runSnell("run -j 30 " + run, "ulimit -n 40;");
+  EXPECT_EQ(refused.code, 2) << refused.out;
+  EXPECT_NE(refused.out.find("-j 30: the open-file limit is 40 (ulimit -n"), std::string::npos)
+      << refused.out;
+  EXPECT_FALSE(fs::exists(out)) << "written before the refusal";
+  const std::string marker = "use -j ";
+  const std::size_t at = refused.out.find(marker);
+  ASSERT_NE(at, std::string::npos) << refused.out;
+  const int fits = std::atoi(refused.out.c_str() + at + marker.size());
+  ASSERT_GE(fits, 1) << refused.out;
+  const auto fitting = runSnell(fmt::format("run -j {} {}", fits, run), "ulimit -n 40;");
+  EXPECT_EQ(fitting.code, 0) << fitting.out;
+  const auto raised = runSnell("run -j 30 " + run, "ulimit -Sn 40; ulimit -Hn 200;");
+  EXPECT_EQ(raised.code, 0) << raised.out;
+  const auto none = runSnell("run -j 1 " + run, "ulimit -n 12;");
+  EXPECT_EQ(none.code, 2) << none.out;
+  EXPECT_NE(none.out.find("not even one worker fits: the open-file limit is 12"), std::string::npos)
+      << none.out;
+  fs::remove_all(out);
 }
 
 }  // namespace

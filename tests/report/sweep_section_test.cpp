@@ -80,6 +80,7 @@ class SweepSection : public ::testing::Test {
     dir_ = fs::temp_directory_path() / fmt::format("snell-report-sweep-{}", getpid());
     fs::remove_all(dir_);
     fs::create_directories(dir_ / "sweep");
+    fs::create_directories(dir_ / "images");  // a run that kept no images
     std::ofstream(dir_ / "results.jsonl")
         << record("orange-book/14.1-fresnel/sphere", "gl").dump() << "\n"
         << record("cg-tutorial/c7e3v-refraction-glass-to-air/sphere", "gl").dump() << "\n"
