@@ -42,7 +42,7 @@ FrameTiming timeFrames(Backend& backend, const RenderJob& job, const Manifest& m
   t.width = job.width;
   t.height = job.height;
   t.repeats = options.repeats;
-  t.medianMs = percentile(ms, 50.0);
+  t.medianMs = median(ms);
   t.p10Ms = percentile(ms, 10.0);
   t.p90Ms = percentile(ms, 90.0);
   t.minMs = *std::min_element(ms.begin(), ms.end());

@@ -15,6 +15,13 @@ double percentile(std::vector<double> values, double p) {
   return values[std::clamp<std::size_t>(rank, 1, values.size()) - 1];
 }
 
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : (values[middle - 1] + values[middle]) / 2.0;
+}
+
 ImageError imageError(const Image& rendered, const Image& reference,
                       const std::vector<bool>& referenceCovers) {
   if (rendered.width != reference.width || rendered.height != reference.height)

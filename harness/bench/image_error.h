@@ -25,5 +25,8 @@ ImageError imageError(const Image& rendered, const Image& reference,
 
 // The nearest-rank percentile (0 < p <= 100) of the values; 0 when empty.
 double percentile(std::vector<double> values, double p);
+// The median: of an even count, the mean of the middle two (where the 50th
+// nearest-rank percentile is the lower one); 0 when empty.
+double median(std::vector<double> values);
 
 }  // namespace snell::bench

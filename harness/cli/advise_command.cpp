@@ -6,6 +6,7 @@
 #include "bench/bench_chart.h"
 #include "bench/bench_record.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -54,8 +55,10 @@ Command addAdviseCommand(CLI::App& app) {
       "The method ladder: fresnel (default), dispersion, refraction or a ladder of your own; its "
       "results are read from " +
           defaultBenchDir() + "/LADDER/bench.json");
-  advise->add_option("--results", options->results,
-                     "A `snell bench` bench.json (in place of the ladder's default)");
+  advise
+      ->add_option("--results", options->results,
+                   "A `snell bench` bench.json (in place of the ladder's default)")
+      ->check(nonEmptyPath());
   advise->add_option("--backend", options->backend, "Only this backend (default: each measured)");
   advise->add_flag("--json", options->json, "One JSON object on standard output, for scripts");
   advise->footer("Exit code 0 when every backend has a method within budget, 1 when one has none.");

@@ -1,8 +1,10 @@
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <system_error>
 
 #include "bench/ablation.h"
@@ -15,6 +17,7 @@
 #include "bench/vertex_chart.h"
 #include "bench/wavelength_chart.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
 
@@ -130,7 +133,8 @@ Command addBenchCommand(CLI::App& app) {
       ->add_option("--out", options->out,
                    "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
                    "vertices.svg/png, wavelengths.svg/png, images/; ablation.json")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(nonEmptyPath());
   bench
       ->add_option("--metric", options->metric,
                    "Error on the chart's axis and for the table's front: rms, max, de_mean, "
@@ -145,6 +149,21 @@ Command addBenchCommand(CLI::App& app) {
       "resolution, over the pixels both images cover. Timing is measured, never asserted.");
   return [options] {
     bench::errorMetric({}, options->metric);  // refuse an unknown metric before drawing
+    // Each backend once: a second timing of it would be a second record
+    // under one key, which `advise` refuses.
+    const std::vector<std::string>& backends = options->run.backends;
+    for (auto it = backends.begin(); it != backends.end(); ++it)
+      if (std::find(backends.begin(), it, *it) != it)
+        throw UsageError(
+            fmt::format("--backends: `{}` is named twice; name each backend once", *it));
+    // The error and the front are taken at the last size, which the table
+    // and the charts call the largest.
+    const std::vector<int>& sizes = options->run.resolutions;
+    if (std::adjacent_find(sizes.begin(), sizes.end(), std::greater_equal<int>()) != sizes.end())
+      throw UsageError(fmt::format(
+          "--resolutions {}: give them in increasing order, each once (the error is measured "
+          "at the largest, the last)",
+          fmt::join(sizes, ",")));
     checkOutputs({}, {{"--out", options->out}});
     const std::filesystem::path out = options->out;
     // A folder of ladders (each a folder of method folders) runs each into

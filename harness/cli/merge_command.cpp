@@ -10,6 +10,7 @@
 #include "baseline/merge_results.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "cli/results_output.h"
 #include "core/atomic_file.h"
@@ -62,15 +63,19 @@ Command addMergeCommand(CLI::App& app) {
       ->check(CLI::ExistingFile);
   sub->add_option("--json", options->json,
                   "Merged results file (FILE.csv is written beside it: r.jsonl gives r.csv)")
-      ->required();
-  sub->add_option("--junit", options->junit, "Write the merged results as JUnit XML");
+      ->required()
+      ->check(nonEmptyPath());
+  sub->add_option("--junit", options->junit, "Write the merged results as JUnit XML")
+      ->check(nonEmptyPath());
   sub->add_option("--shaders", options->shaders, "Folder of listings the shards ran")
       ->check(CLI::ExistingDirectory);
   sub->add_option("--out", options->out,
                   "Folder holding the shards' images (their --out folders, gathered), for the "
-                  "cross-backend comparisons");
+                  "cross-backend comparisons")
+      ->check(nonEmptyPath());
   sub->add_option("--expectations", options->expectations,
-                  "Known failures, flakes and skips, as for `snell run`");
+                  "Known failures, flakes and skips, as for `snell run`")
+      ->check(nonEmptyPath());
   return [options] {
     std::vector<OutputPath> outputs = resultsFileOutputs("--json", options->json);
     if (!options->junit.empty()) outputs.push_back({"--junit", options->junit});

@@ -61,8 +61,10 @@ Command addSweepCommand(CLI::App& app) {
   sweep->add_option("--listing-worker", options->listingWorker)->group("");
   sweep->add_option("--listing-start", options->listingStart)->group("");
   sweep->add_option("--out", options->out, "Folder for the charts, their data and the input")
-      ->capture_default_str();
-  sweep->add_option("--json", options->json, "Breaks as JSON (default OUT/sweep.json)");
+      ->capture_default_str()
+      ->check(nonEmptyPath());
+  sweep->add_option("--json", options->json, "Breaks as JSON (default OUT/sweep.json)")
+      ->check(nonEmptyPath());
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
   sweep->add_flag("--no-charts", options->noCharts, "Skip the gnuplot charts");
   sweep->add_option("--timeout", options->timeout, "Seconds each driver may take")

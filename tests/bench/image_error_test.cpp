@@ -56,4 +56,12 @@ TEST(Percentile, IsTheNearestRank) {
 }
 
 }  // namespace
+TEST(Median, OfAnEvenCountIsTheMeanOfTheMiddleTwo) {
+  EXPECT_EQ(median({4.0, 1.0}), 2.5);  // --repeats 2 gave the minimum, 1
+  EXPECT_EQ(median({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_EQ(median({1.0, 2.0, 10.0, 3.0}), 2.5);
+  EXPECT_EQ(median({}), 0.0);
+  EXPECT_EQ(percentile({4.0, 1.0}, 50.0), 1.0);  // the nearest rank, unchanged
+}
+
 }  // namespace snell::bench

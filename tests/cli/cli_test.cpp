@@ -244,7 +244,23 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"run --backend all --gl-provider egl --filter 'no-such/*'", "no case matches --filter"},
            {"advise --ladder dispersion --scene sphere --budget 1 --results " SNELL_SOURCE_ROOT
             "/docs/bench/fresnel/bench.json",
-            "both say which results to read"}}) {
+            "both say which results to read"},
+           // Empty paths on the other commands (an internal error, or the
+           // default in their place).
+           {"merge /dev/null --json ''", "--json: an empty path"},
+           {"merge /dev/null --json /tmp/m.jsonl --junit ''", "--junit: an empty path"},
+           {"report /dev/null -o ''", "--out: an empty path"},
+           {"report /dev/null -o /tmp/r --images ''", "--images: an empty path"},
+           {"report /dev/null -o /tmp/r --images /no/such/folder", "--images: Directory does not"},
+           {"sweep --out ''", "--out: an empty path"},
+           {"sweep --json ''", "--json: an empty path"},
+           {"bench --out ''", "--out: an empty path"},
+           {"advise --scene sphere --budget 1 --results ''", "--results: an empty path"},
+           // bench: each backend once, sizes increasing (the error is taken
+           // at the last, which the charts call the largest).
+           {"bench --backends vk,vk", "`vk` is named twice"},
+           {"bench --resolutions 64,32", "--resolutions 64,32: give them in increasing order"},
+           {"bench --resolutions 32,32", "--resolutions 32,32: give them in increasing order"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
