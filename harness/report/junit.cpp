@@ -5,6 +5,7 @@
 #include <map>
 #include <pugixml.hpp>
 #include <sstream>
+#include <string_view>
 
 #include "runner/checks/check_kind.h"
 
@@ -38,6 +39,27 @@ JUnitNotes junitNotesOf(const BaselineReport& report) {
   return notes;
 }
 
+namespace {
+
+// XML 1.0 has no way to write most control characters, not even as
+// character references (&#1; makes the file unreadable to every parser):
+// a driver's or worker's message that holds one (an ESC of a coloured log)
+// gets it spelled out as \xNN instead.
+std::string xmlSafe(std::string_view text) {
+  std::string safe;
+  safe.reserve(text.size());
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 && c != '\t' && c != '\n' && c != '\r')
+      safe += fmt::format("\\x{:02x}", byte);
+    else
+      safe += c;
+  }
+  return safe;
+}
+
+}  // namespace
+
 std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes& notes) {
   pugi::xml_document doc;
   pugi::xml_node suites = doc.append_child("testsuites");
@@ -49,11 +71,11 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
     pugi::xml_node& suite = byBackend[r.backend];
     if (!suite) {
       suite = suites.append_child("testsuite");
-      suite.append_attribute("name") = r.backend.c_str();
+      suite.append_attribute("name") = xmlSafe(r.backend).c_str();
     }
     pugi::xml_node test = suite.append_child("testcase");
     test.append_attribute("classname") = fmt::format("snell.{}", r.backend).c_str();
-    test.append_attribute("name") = r.caseId.c_str();
+    test.append_attribute("name") = xmlSafe(r.caseId).c_str();
     test.append_attribute("time") = r.seconds;
     const std::string key = r.backend + " " + r.caseId;
     if (const auto expected = notes.expectedFailures.find(key);
@@ -65,25 +87,26 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
       pugi::xml_node flaky = test.append_child("flakyFailure");
       flaky.append_attribute("type") = statusName(r.status);
       flaky.append_attribute("message") = flake->second.c_str();
-      flaky.append_child(pugi::node_pcdata).set_value(r.message.c_str());
+      flaky.append_child(pugi::node_pcdata).set_value(xmlSafe(r.message).c_str());
     } else if (isFailure(r.status)) {
       pugi::xml_node failure = test.append_child(r.status == Status::Fail ? "failure" : "error");
       failure.append_attribute("type") = statusName(r.status);
-      failure.append_attribute("message") = failureMessage(r).c_str();
-      failure.append_child(pugi::node_pcdata).set_value(r.message.c_str());
+      failure.append_attribute("message") = xmlSafe(failureMessage(r)).c_str();
+      failure.append_child(pugi::node_pcdata).set_value(xmlSafe(r.message).c_str());
     } else if (r.status == Status::NotSupported) {
-      test.append_child("skipped").append_attribute("message") = r.message.c_str();
+      test.append_child("skipped").append_attribute("message") = xmlSafe(r.message).c_str();
     }
     test.append_child("system-out")
         .append_child(pugi::node_pcdata)
         .set_value(
-            (fmt::format(
-                 "status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
-                 statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
-                 r.worstSlack(), r.driver.apiVersion, r.driver.renderer) +
-             // A listing kept as published that must not compile: its diagnostic
-             // is the result.
-             (r.status == Status::ExpectedCompileError ? "\n" + r.message : std::string()))
+            xmlSafe(
+                fmt::format(
+                    "status {}; {} components checked, {} undefined, worst slack {:.3g}; {} on {}",
+                    statusName(r.status), r.componentsChecked(), r.componentsUndefined(),
+                    r.worstSlack(), r.driver.apiVersion, r.driver.renderer) +
+                // A listing kept as published that must not compile: its diagnostic
+                // is the result.
+                (r.status == Status::ExpectedCompileError ? "\n" + r.message : std::string()))
                 .c_str());
   }
   for (auto& [backend, suite] : byBackend) {

@@ -34,5 +34,21 @@ TEST(JUnit, StatusesBecomeFailuresSkipsAndQuotedDiagnostics) {
   EXPECT_NE(xml.find("0:4(8): error: syntax error"), std::string::npos) << xml;
 }
 
+// XML 1.0 cannot carry most control characters, not even as &#1;: a
+// crashed worker's stderr (an ESC of a coloured log) is spelled out instead,
+// so every XML parser reads the file.
+TEST(JUnit, ControlCharactersInMessagesAreSpelledOutNotWritten) {
+  const std::string xml = toJUnitXml({
+      result("a/crash", Status::Crash, "worker stderr: \x1b[31mabort\x1b[0m\x01 done\ttab"),
+      result("b/unsupported", Status::NotSupported, "reason\x02"),
+  });
+  for (const char c : xml)
+    EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r')
+        << "a raw control character " << static_cast<int>(c);
+  EXPECT_EQ(xml.find("&#"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("\\x1b[31mabort\\x1b[0m\\x01 done\ttab"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("reason\\x02"), std::string::npos) << xml;
+}
+
 }  // namespace
 }  // namespace snell
