@@ -57,6 +57,9 @@ double transmittedCosineSquared(double cosIncident, double n1, double n2) {
 
 FresnelReflectance fresnelExact(double cosIncident, double n1, double n2) {
   const double cos2t = transmittedCosineSquared(cosIncident, n1, n2);
+  // Equal indices are no interface: nothing is reflected. (Computed, cos_i
+  // below 1e-154 squares to 0 and the ratios below would give 1.)
+  if (n1 == n2 && cosIncident > 0.0) return {0.0, 0.0, 0.0, false};
   if (cos2t < 0.0) return {1.0, 1.0, 1.0, true};
   const double ci = cosIncident;
   const double ct = std::sqrt(cos2t);

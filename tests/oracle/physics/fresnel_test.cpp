@@ -36,6 +36,21 @@ TEST(Fresnel, NormalIncidenceIsTheSquaredIndexRatio) {
 
 // Hecht's worked case, glass of 1.5 at 45 degrees from air: Rs = 0.0920,
 // Rp = 0.00847 (by hand from the amplitude formulas, to the digits shown).
+// Equal indices are no interface: nothing is reflected at any angle, even
+// where cos_i squared underflows (it gave 1 below cos_i = 1e-154). At
+// cos_i = 0 exactly the ray skims the surface: full reflection, the limit
+// kept there.
+TEST(Fresnel, EqualIndicesReflectNothing) {
+  for (const double cosine : {1.0, 0.5, 1e-9, 1e-160, 1e-300, 5e-324}) {
+    const FresnelReflectance r = fresnelExact(cosine, 1.5, 1.5);
+    EXPECT_EQ(r.unpolarised, 0.0) << cosine;
+    EXPECT_EQ(r.s, 0.0) << cosine;
+    EXPECT_EQ(r.p, 0.0) << cosine;
+  }
+  EXPECT_EQ(fresnelExact(0.0, 1.5, 1.5).unpolarised, 1.0);
+  EXPECT_GT(fresnelExact(1e-300, 1.5, 1.5000001).unpolarised, 0.99);  // an interface: grazing
+}
+
 TEST(Fresnel, GlassAtFortyFiveDegrees) {
   const FresnelReflectance r = fresnelExact(cosOfDegrees(45.0), 1.0, 1.5);
   EXPECT_NEAR(r.s, 0.0920, 5e-5);

@@ -19,6 +19,14 @@ TEST(InterfaceAngles, CriticalAngleOfGlassToAir) {
   EXPECT_NEAR(criticalAngleDegrees(1.0 + 1e-12, 1.0), 90.0, 1e-4);
 }
 
+// A huge index: asin(1 / 1e200) is 1e-200 radians; n1^2 would overflow.
+TEST(InterfaceAngles, CriticalAngleOfAHugeIndexDoesNotOverflow) {
+  const double expected = 1e-200 * 180.0 / 3.14159265358979323846;
+  EXPECT_NEAR(criticalAngleDegrees(1e200, 1.0) / expected, 1.0, 1e-12);
+  EXPECT_NEAR(criticalAngleDegrees(1e300, 1e299), std::asin(0.1) * 180.0 / 3.14159265358979323846,
+              1e-12);
+}
+
 TEST(InterfaceAngles, CriticalAngleNeedsTheDenserSideFirst) {
   EXPECT_THROW(criticalAngleDegrees(1.0, 1.5), UsageError);
   EXPECT_THROW(criticalAngleDegrees(1.5, 1.5), UsageError);
