@@ -1,14 +1,59 @@
 #include "baseline/merge_results.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
+#include <ranges>
 #include <set>
 
+#include "baseline/driver_build.h"
+#include "baseline/shard.h"
 #include "core/errors.h"
 
 namespace snell {
+namespace {
+
+// Each backend's records say which shard of how many ran them: a merge
+// that lacks one of the shards would be a run with cases missing and no
+// word of it. A file with no results (a shard with no cases) may stand for
+// any one shard; records of a whole run, or written before records named
+// their shard, say nothing and are not counted.
+void requireEveryShard(const std::vector<ResultsFile>& files) {
+  std::size_t emptyFiles = 0;
+  std::map<std::string, std::map<std::size_t, std::set<std::size_t>>> seen;  // backend, N, I
+  for (const ResultsFile& file : files) {
+    if (file.results.empty()) ++emptyFiles;
+    for (const CaseResult& r : file.results)
+      if (!r.shard.empty()) {
+        const Shard shard = parseShard(r.shard);
+        seen[r.backend][shard.count].insert(shard.index);
+      }
+  }
+  for (const auto& [backend, counts] : seen) {
+    if (counts.size() > 1)
+      throw UsageError(
+          fmt::format("the {} results come from runs split {} ways: merge the shards of one run",
+                      backend, fmt::join(counts | std::views::keys, " and ")));
+    const auto& [count, indices] = *counts.begin();
+    std::vector<std::string> missing;
+    for (std::size_t i = 1; i <= count; ++i)
+      if (!indices.contains(i)) missing.push_back(fmt::format("{}/{}", i, count));
+    if (missing.size() > emptyFiles)
+      throw UsageError(fmt::format(
+          "no {} results of shard {}{}: merge every shard's results file (an empty one "
+          "counts), or run the missing shard",
+          backend, fmt::join(missing, ", "),
+          emptyFiles > 0 ? (emptyFiles == 1 ? std::string(" (the empty file stands for one)")
+                                            : fmt::format(" ({} empty files stand for "
+                                                          "others)",
+                                                          emptyFiles))
+                         : ""));
+  }
+}
+
+}  // namespace
 
 std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
                                      const std::vector<Case>& catalog) {
@@ -16,8 +61,19 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
   for (const Case& c : catalog) caseOrder.emplace(c.id, caseOrder.size());
   std::map<std::pair<std::string, std::size_t>, std::pair<const CaseResult*, const std::string*>>
       merged;
+  // The first record of each backend that names its driver, and its file.
+  std::map<std::string, std::pair<const CaseResult*, const std::string*>> driverOf;
   for (const ResultsFile& file : files)
     for (const CaseResult& r : file.results) {
+      const auto [first, firstSeen] = driverOf.emplace(r.backend, std::pair(&r, &file.path));
+      if (!firstSeen && !sameDriverBuild(first->second.first->driver, r.driver))
+        throw UsageError(fmt::format(
+            "{} ran {} on {}, and {} on {}: a merge joins the shards of one run; merge each "
+            "driver build's results apart and compare them",
+            *first->second.second, r.backend, driverBuildName(first->second.first->driver),
+            file.path, driverBuildName(r.driver)));
+      if (!firstSeen && !namesDriver(first->second.first->driver))
+        first->second = std::pair(&r, &file.path);
       const auto order = caseOrder.find(r.caseId);
       if (order == caseOrder.end())
         throw UsageError(
@@ -32,8 +88,12 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
                         "merge the results of one run's shards only",
                         *it->second.second, file.path, r.caseId, r.backend));
     }
+  requireEveryShard(files);
   std::vector<CaseResult> results;
-  for (const auto& [key, value] : merged) results.push_back(*value.first);
+  for (const auto& [key, value] : merged) {
+    results.push_back(*value.first);
+    results.back().shard.clear();  // the merge is the whole run
+  }
   return results;
 }
 

@@ -3,7 +3,9 @@
 // cross-backend image comparisons of cases whose backends ran in different
 // jobs run here, so splitting a run drops no check.
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "baseline/expectation_file.h"
@@ -89,9 +91,18 @@ Command addMergeCommand(CLI::App& app) {
     bool incomplete = false;
     for (const std::string& input : options->inputs) {
       bool inputIncomplete = false;
-      files.push_back({input, readFinishedResultsFile(input, &inputIncomplete)});
+      // A shard may have no cases (more shards than cases): its file is
+      // empty, and it is one of the shards all the same.
+      files.push_back(
+          {input, readFinishedResultsFile(input, &inputIncomplete, EmptyResults::Allowed)});
       incomplete = incomplete || inputIncomplete;
     }
+    if (std::all_of(files.begin(), files.end(),
+                    [](const ResultsFile& f) { return f.results.empty(); }))
+      throw UsageError(
+          fmt::format("{}: hold{} no results; give the results files of a run's "
+                      "shards (snell run --json)",
+                      fmt::join(options->inputs, ", "), options->inputs.size() == 1 ? "s" : ""));
     std::vector<CaseResult> results = mergeResults(files, catalog);
     std::vector<std::string> backends;
     for (const CaseResult& r : results)

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "backends/backend_registry.h"
+#include "baseline/driver_build.h"
 #include "baseline/expectation_file.h"
 #include "baseline/merge_results.h"
 #include "baseline/results_file.h"
@@ -57,7 +58,8 @@ std::string userFolderFlags(const SuiteOptions& options) {
   return flags;
 }
 
-std::vector<std::string> backendsToRun(const SuiteOptions& options) {
+std::vector<std::string> backendsToRun(const SuiteOptions& options,
+                                       std::map<std::string, DriverInfo>* drivers) {
   const bool all = options.backend == "all";
   std::vector<std::string> wanted;
   if (all) {
@@ -73,6 +75,7 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options) {
   for (const BackendProbe& probe : probes) {
     if (probe.up) {
       up.push_back(probe.backend);
+      if (drivers) (*drivers)[probe.backend] = probe.driver;
       continue;
     }
     if (!all)
@@ -155,6 +158,31 @@ void requireNothingToResumeIsLost(const SuiteOptions& options) {
         "--resume {}: a finished run ({} records, none marked incomplete), so nothing to go on "
         "with; run without --resume to run it again",
         options.resume, records.size()));
+}
+
+// A run goes on on the driver build it began on: results of two builds
+// under one backend would be credited to one of them.
+void requireSameDriverBuild(const std::string& file, const CaseResult& r,
+                            const std::map<std::string, DriverInfo>& drivers) {
+  const auto here = drivers.find(r.backend);
+  if (here == drivers.end() || sameDriverBuild(here->second, r.driver)) return;
+  throw UsageError(fmt::format(
+      "--resume {}: its {} results ran on {}, and {} here is {}: go on with them on that build, "
+      "or run without --resume",
+      file, r.backend, driverBuildName(r.driver), r.backend, driverBuildName(here->second)));
+}
+
+// Every result of the resumed file is one this command would give: one it
+// would not (another filter, shard or backend list) would be dropped from
+// --json without a word. `left` holds those no case of the run took.
+void requireEveryResumedResultKept(const std::string& file,
+                                   const std::map<std::string, CaseResult>& left) {
+  if (left.empty()) return;
+  const CaseResult& first = left.begin()->second;
+  throw UsageError(fmt::format(
+      "--resume {}: holds {} result{} this command does not give (one: {} on {}): go on with "
+      "the command that wrote it (the same --filter, --shard, --backend and --expectations)",
+      file, left.size(), left.size() == 1 ? "" : "s", first.caseId, first.backend));
 }
 
 }  // namespace
@@ -240,9 +268,10 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::future<void> validated =
       std::async(std::launch::async, [&] { validateCases(run.cases, options.shaders); });
   std::vector<std::string> backends;
+  std::map<std::string, DriverInfo> drivers;
   std::exception_ptr backendError;
   try {
-    backends = backendsToRun(options);
+    backends = backendsToRun(options, &drivers);
   } catch (...) {
     backendError = std::current_exception();
   }
@@ -268,7 +297,10 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   requireNothingToResumeIsLost(options);
   std::map<std::string, CaseResult> resumed;
   if (!options.resume.empty())
-    for (CaseResult& r : readResultsFile(options.resume)) resumed[resultKey(r)] = std::move(r);
+    for (CaseResult& r : readResultsFile(options.resume)) {
+      requireSameDriverBuild(options.resume, r, drivers);
+      resumed[resultKey(r)] = std::move(r);
+    }
 
   // One slot per result the run gives, in order: a case already finished in
   // the resumed file keeps its result; the others become tasks.
@@ -288,6 +320,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
         // Its image is compared with the other backends' after the run.
         resumedImages = resumedImages || c.spec.has("image");
         slots.emplace_back(std::move(done->second));
+        resumed.erase(done);
         continue;
       }
       slotOfTask.push_back(slots.size());
@@ -297,6 +330,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       if (c.spec.has("image")) imageCaseIds.insert(c.id);
     }
   run.planned = slots.size();
+  requireEveryResumedResultKept(options.resume, resumed);
   // Only an image case that will run, or one resumed whose image is still
   // to be compared across APIs, needs the image module: one the shard or a
   // skip list leaves out does not, so a machine without OpenImageIO can run
@@ -349,13 +383,16 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   };
   if (run.oracleStore.empty()) openImagesMeanwhile();
   std::size_t finished = slots.size() - tasks.size();
-  superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& result) {
+  const std::string shardLabel = shard ? fmt::format("{}/{}", shard->index, shard->count) : "";
+  superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
+    CaseResult result = finishedCase;
+    result.shard = shardLabel;
     fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(toJson(result).dump());
     if (result.oracleResults > result.oracleStored) openImagesMeanwhile();
-    slots[slotOfTask[task]] = result;
+    slots[slotOfTask[task]] = std::move(result);
   });
   for (auto& slot : slots)
     if (slot) run.results.push_back(std::move(*slot));

@@ -3,9 +3,11 @@
 // driver loads, then run the cases through the supervisor with progress on
 // stderr, results streamed to --json as they end.
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "backends/backend.h"
 #include "baseline/baseline_judgement.h"
 #include "core/case.h"
 #include "runner/case_result.h"
@@ -39,8 +41,9 @@ struct SuiteOptions {
 // The backends a run asks for, each known to come up: probed in worker
 // processes (runner/backend_probe.h). A named backend whose driver does not
 // come up is one SetupError (exit 2), not a crash per case; `all` skips it
-// with a note on stderr.
-std::vector<std::string> backendsToRun(const SuiteOptions& options);
+// with a note on stderr. `drivers`, when given, gets each one's driver.
+std::vector<std::string> backendsToRun(const SuiteOptions& options,
+                                       std::map<std::string, DriverInfo>* drivers = nullptr);
 
 // --device and --gl-provider as worker arguments.
 std::vector<std::string> workerBackendArgs(const SuiteOptions& options);

@@ -40,6 +40,9 @@ struct CaseResult {
   // The statuses of reruns of an unexpected failure, in order: a failure
   // that passes on a rerun is a flake, and is reported as one.
   std::vector<Status> reruns;
+  // "I/N" when the run was shard I of N (`run --shard`), so that a merge can
+  // tell a shard that is missing; empty for a whole run.
+  std::string shard;
 
   // One vector (or scalar) per captured output per vertex.
   std::size_t vectorsChecked() const { return vertices * varyings.size(); }

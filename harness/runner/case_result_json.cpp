@@ -55,6 +55,7 @@ nlohmann::json toJson(const CaseResult& r) {
                            {"oracle_stored", r.oracleStored},
                            {"phases", phasesJson(r.phases)},
                            {"reruns", reruns}};
+  if (!r.shard.empty()) record["shard"] = r.shard;
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
   return record;
 }
@@ -82,6 +83,7 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   // Absent from records written before results were stored.
   if (j.contains("oracle_results")) r.oracleResults = jsonCount<int>(j.at("oracle_results"));
   if (j.contains("oracle_stored")) r.oracleStored = jsonCount<int>(j.at("oracle_stored"));
+  if (j.contains("shard")) r.shard = j.at("shard").get<std::string>();
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

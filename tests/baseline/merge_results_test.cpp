@@ -68,5 +68,78 @@ TEST(MergeResults, OverlapAndUnknownCaseAreUsageErrors) {
   EXPECT_THROW(mergeResults({{"1.jsonl", {result("zz", "gl")}}}, catalog), UsageError);
 }
 
+// Shards of two driver builds under one backend would be credited to one
+// of them: refused, naming both files and both builds. A record that names
+// no driver (a worker that died first) joins any; other backends may differ.
+TEST(MergeResults, TwoDriverBuildsUnderOneBackendAreRefused) {
+  const std::vector<Case> catalog = {imageCase("a", false), imageCase("b", false),
+                                     imageCase("c", false)};
+  const auto on = [](CaseResult r, const char* version) {
+    r.driver.renderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    r.driver.apiVersion = "4.5 (Core Profile) Mesa 22.3.6";
+    r.driver.driverVersion = version;
+    return r;
+  };
+  try {
+    mergeResults({{"1.jsonl", {on(result("a", "gl"), "Mesa 22.3.6")}},
+                  {"2.jsonl", {on(result("b", "gl"), "Mesa 24.0.0")}}},
+                 catalog);
+    ADD_FAILURE() << "merged two driver builds";
+  } catch (const UsageError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("1.jsonl ran gl on Mesa 22.3.6"), std::string::npos) << message;
+    EXPECT_NE(message.find("2.jsonl on Mesa 24.0.0"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(mergeResults({{"1.jsonl", {result("a", "gl")}},
+                                {"2.jsonl", {on(result("b", "gl"), "Mesa 22.3.6")}},
+                                {"3.jsonl", {on(result("c", "gl"), "Mesa 22.3.6")}}},
+                               catalog));
+  EXPECT_NO_THROW(mergeResults({{"1.jsonl", {on(result("a", "gl"), "Mesa 22.3.6")}},
+                                {"2.jsonl", {on(result("a", "vk"), "Mesa 24.0.0")}}},
+                               catalog));
+  EXPECT_THROW(mergeResults({{"1.jsonl", {result("a", "gl")}},
+                             {"2.jsonl", {on(result("b", "gl"), "Mesa 22.3.6")}},
+                             {"3.jsonl", {on(result("c", "gl"), "Mesa 24.0.0")}}},
+                            catalog),
+               UsageError);
+}
+
+// Records name their shard: a merge that lacks one is refused, naming it;
+// an empty file (a shard with no cases) stands for one shard; results of a
+// whole run name none and are not counted; and the merged records are the
+// whole run's.
+TEST(MergeResults, AMissingShardIsRefusedAndAnEmptyFileStandsForOne) {
+  const std::vector<Case> catalog = {imageCase("a", false), imageCase("b", false),
+                                     imageCase("c", false)};
+  const auto of = [](CaseResult r, const char* shard) {
+    r.shard = shard;
+    return r;
+  };
+  const ResultsFile one{"1.jsonl", {of(result("a", "gl"), "1/3"), of(result("a", "vk"), "1/3")}};
+  const ResultsFile two{"2.jsonl", {of(result("b", "gl"), "2/3"), of(result("b", "vk"), "2/3")}};
+  const ResultsFile three{"3.jsonl", {of(result("c", "gl"), "3/3"), of(result("c", "vk"), "3/3")}};
+  const ResultsFile empty{"e.jsonl", {}};
+  try {
+    mergeResults({one, three}, catalog);
+    ADD_FAILURE() << "merged without shard 2";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("no gl results of shard 2/3"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(mergeResults({one, two, three}, catalog).size(), 6u);
+  EXPECT_EQ(mergeResults({one, three, empty}, catalog).size(), 4u);
+  EXPECT_THROW(mergeResults({one, empty}, catalog), UsageError);  // two missing, one empty
+  for (const CaseResult& r : mergeResults({one, two, three}, catalog)) EXPECT_EQ(r.shard, "");
+  // Shards of runs split two ways and three ways.
+  EXPECT_THROW(mergeResults({one, {"x.jsonl", {of(result("b", "gl"), "2/2")}}}, catalog),
+               UsageError);
+  // A whole run's records say nothing of shards: gl run whole, vk in shards.
+  const ResultsFile wholeGl{"gl.jsonl", {result("a", "gl"), result("b", "gl"), result("c", "gl")}};
+  const ResultsFile vk1{"vk1.jsonl", {of(result("a", "vk"), "1/2"), of(result("c", "vk"), "1/2")}};
+  const ResultsFile vk2{"vk2.jsonl", {of(result("b", "vk"), "2/2")}};
+  EXPECT_EQ(mergeResults({wholeGl, vk1, vk2}, catalog).size(), 6u);
+  EXPECT_THROW(mergeResults({wholeGl, vk1}, catalog), UsageError);
+}
+
 }  // namespace
 }  // namespace snell

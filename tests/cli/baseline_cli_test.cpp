@@ -369,4 +369,50 @@ TEST(BaselineCli, OutputsAreCheckedBeforeTheWorkAndAnEmptyRunCanBeResumed) {
   EXPECT_EQ(readText(page), before) << "the results file was written over";
 }
 
+// --resume goes on with the run that wrote the file: results of another
+// driver build under the same backend, or of cases this command does not
+// run (another --filter), were kept or dropped without a word.
+TEST(BaselineCli, ResumeRefusesAnotherDriverBuildAndAnotherCommandsResults) {
+  Scratch scratch;
+  const std::string one = "--backend gl --filter 'orange-book/14.1-fresnel/sweep'";
+  const fs::path full = scratch / "full.jsonl";
+  ASSERT_EQ(snell(fmt::format("run {} --out {} --json {}", one, (scratch / "out").string(),
+                              full.string()))
+                .code,
+            0);
+  const auto interrupted = [&](const std::string& name, auto&& edit) {
+    std::vector<nlohmann::json> lines = records(full);
+    std::ofstream file(scratch / name);
+    for (nlohmann::json& line : lines) {
+      line["incomplete"] = true;
+      edit(line);
+      file << line.dump() << "\n";
+    }
+    return (scratch / name).string();
+  };
+  const std::string newer = interrupted(
+      "newer.jsonl", [](nlohmann::json& line) { line["driver"]["driver_version"] = "Mesa 99.0"; });
+  const Outcome driver =
+      snell(fmt::format("run {} --out {} --json {} --resume {}", one, (scratch / "out").string(),
+                        (scratch / "r1.jsonl").string(), newer));
+  EXPECT_EQ(driver.code, 2) << driver.out;
+  EXPECT_NE(driver.out.find("its gl results ran on Mesa 99.0"), std::string::npos) << driver.out;
+
+  const std::string same = interrupted("same.jsonl", [](nlohmann::json&) {});
+  const Outcome other = snell(fmt::format(
+      "run --backend gl --filter 'orange-book/14.1-fresnel/sphere' --out {} --json {} --resume {}",
+      (scratch / "out").string(), (scratch / "r2.jsonl").string(), same));
+  EXPECT_EQ(other.code, 2) << other.out;
+  EXPECT_NE(other.out.find("holds 1 result this command does not give (one: "
+                           "orange-book/14.1-fresnel/sweep on gl)"),
+            std::string::npos)
+      << other.out;
+  EXPECT_FALSE(fs::exists(scratch / "r2.jsonl"));
+
+  const Outcome goesOn =
+      snell(fmt::format("run {} --out {} --json {} --resume {}", one, (scratch / "out").string(),
+                        (scratch / "r3.jsonl").string(), same));
+  EXPECT_EQ(goesOn.code, 0) << goesOn.out;
+}
+
 }  // namespace
