@@ -70,9 +70,11 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
     }
     const CaseResult& now = *it->second;
     const StatusChange change{key, old->status, now.status};
-    if (old->status == now.status)
-      ++c.unchanged;
-    else if (old->status == Status::NotSupported || now.status == Status::NotSupported)
+    if (old->status == now.status) ++c.unchanged;
+    // Support that comes or goes is a change, not better or worse; but a
+    // case a build newly claims to support and then fails is a regression.
+    else if (now.status == Status::NotSupported ||
+             (old->status == Status::NotSupported && !isFailure(now.status)))
       c.changes.push_back(change);
     else if (worstOf(old->status, now.status) == now.status)
       c.regressions.push_back(change);

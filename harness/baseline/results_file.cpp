@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -25,6 +26,7 @@ std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
                     "`snell run --json`",
                     path.string()));
   std::vector<CaseResult> results;
+  std::map<std::string, int> lineOf;  // by resultKey
   int number = 0;
   std::string line;
   while (std::getline(in, line)) {
@@ -33,6 +35,12 @@ std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
     try {
       const nlohmann::json record = nlohmann::json::parse(line);
       results.push_back(caseResultFromJson(record));
+      const auto [first, added] = lineOf.emplace(resultKey(results.back()), number);
+      if (!added)
+        throw UsageError(fmt::format(
+            "{}:{}: a second result of {} on {} (the first is line {}); a run writes each case "
+            "once per backend: give a file written by `snell run --json` or `snell merge`",
+            path.string(), number, results.back().caseId, results.back().backend, first->second));
       if (state && record.is_object() && record.value("incomplete", false))
         state->incomplete = true;
     } catch (const nlohmann::json::exception& error) {
@@ -51,17 +59,18 @@ std::vector<CaseResult> readResultsFile(const std::filesystem::path& path,
   return results;
 }
 
-std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& path,
-                                                bool* incomplete) {
+std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& path, bool* incomplete,
+                                                EmptyResults empty) {
   ResultsFileState state;
   std::vector<CaseResult> results = readResultsFile(path, &state);
+  // A run's FILE.partial is renamed into place whole when the run ends:
+  // one still there is a run that was killed.
+  const std::string file = path.string();
+  const std::string partial = kPartialSuffix;
+  const bool isPartial = file.size() > partial.size() &&
+                         file.compare(file.size() - partial.size(), partial.size(), partial) == 0;
   if (state.tornLine > 0) {
-    // Only a run's FILE.partial can be torn (the results file is renamed
-    // into place whole): --resume finishes it into FILE.
-    const std::string file = path.string();
-    const std::string partial = kPartialSuffix;
-    const bool isPartial = file.size() > partial.size() &&
-                           file.compare(file.size() - partial.size(), partial.size(), partial) == 0;
+    // Only a run's FILE.partial can be torn: --resume finishes it into FILE.
     throw UsageError(fmt::format(
         "{}:{}: the last record is cut off (a run killed while writing it); {}", file,
         state.tornLine,
@@ -70,17 +79,27 @@ std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& pat
                                 file, file.substr(0, file.size() - partial.size()))
                   : std::string("give a whole results file")));
   }
+  if (results.empty() && empty == EmptyResults::Allowed) {
+    if (incomplete) *incomplete = isPartial;
+    return results;
+  }
   if (results.empty())
     throw UsageError(
         fmt::format("{}: holds no results; give a results file written by "
                     "`snell run --json`",
                     path.string()));
-  if (state.incomplete)
+  if (isPartial)
+    fmt::print(stderr,
+               "snell: note: {} is the results of a run that was killed: the cases it did not "
+               "reach are missing from it (finish it with `snell run --resume {} --json {}` and "
+               "the run's own options)\n",
+               file, file, file.substr(0, file.size() - partial.size()));
+  else if (state.incomplete)
     fmt::print(stderr,
                "snell: note: {} is an interrupted run (its records are marked incomplete): the "
                "cases it did not reach are missing from it\n",
                path.string());
-  if (incomplete) *incomplete = state.incomplete;
+  if (incomplete) *incomplete = state.incomplete || isPartial;
   return results;
 }
 

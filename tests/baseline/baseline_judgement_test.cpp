@@ -100,6 +100,26 @@ TEST(BaselineJudgement, ResultsCsvInDeqpRunnerFormat) {
             "gl/new/fail/a,Crash,0.250\n");
 }
 
+// deqp-runner refuses a status it does not know ("unknown runner status"):
+// snell's own are named as the nearest of its statuses.
+TEST(BaselineJudgement, ResultsCsvUsesOnlyDeqpRunnersStatuses) {
+  testing::TempDir dir;
+  const ExpectationSet set = expectations(dir);
+  const std::vector<CaseResult> results = {
+      result("a", Status::NotSupported),   result("b", Status::CompatibilityWarning),
+      result("c", Status::QualityWarning), result("d", Status::ExpectedCompileError),
+      result("e", Status::CompileError),   result("f", Status::Timeout),
+      result("known/fail/a", Status::Pass)};
+  EXPECT_EQ(toResultsCsv(judgeResults(set, results, {})),
+            "gl/a,Skip,0.250\n"
+            "gl/b,Warn,0.250\n"
+            "gl/c,Warn,0.250\n"
+            "gl/d,Pass,0.250\n"
+            "gl/e,Fail,0.250\n"
+            "gl/f,Timeout,0.250\n"
+            "gl/known/fail/a,UnexpectedImprovement(Pass),0.250\n");
+}
+
 TEST(BaselineJudgement, JUnitShowsExpectedFailuresAsSkippedAndFlakesAsFlaky) {
   testing::TempDir dir;
   const ExpectationSet set = expectations(dir);

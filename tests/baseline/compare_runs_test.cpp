@@ -35,6 +35,26 @@ RunSide side(const std::string& label, std::vector<CaseResult> results, std::str
   return {label, std::move(backend), std::move(results)};
 }
 
+// Support that comes or goes is a change; a case not supported before that
+// a new build claims and fails is a regression (it passed the gate).
+TEST(CompareRuns, NewlySupportedAndFailingIsARegression) {
+  const RunSide before = side(
+      "a.jsonl",
+      {result("breaks", "gl", Status::NotSupported), result("crashes", "gl", Status::NotSupported),
+       result("works", "gl", Status::NotSupported), result("dropped", "gl", Status::Fail)});
+  const RunSide after =
+      side("b.jsonl",
+           {result("breaks", "gl", Status::Fail), result("crashes", "gl", Status::Crash),
+            result("works", "gl", Status::Pass), result("dropped", "gl", Status::NotSupported)});
+  const RunComparison c = compareRuns(before, after, DriftRule{});
+  ASSERT_EQ(c.regressions.size(), 2u);
+  EXPECT_EQ(c.regressions[0].key, "gl breaks");
+  EXPECT_EQ(c.regressions[1].key, "gl crashes");
+  ASSERT_EQ(c.changes.size(), 2u);
+  EXPECT_EQ(c.changes[0].key, "gl dropped");
+  EXPECT_EQ(c.changes[1].key, "gl works");
+}
+
 TEST(CompareRuns, EveryCategory) {
   const RunSide before =
       side("a.jsonl", {result("same", "gl", Status::Pass), result("worse", "gl", Status::Pass),

@@ -51,5 +51,41 @@ TEST(ResultsFile, MalformedRecordIsUsageErrorAtItsLine) {
   EXPECT_THROW(readResultsFile(dir.path() / "missing.jsonl"), UsageError);
 }
 
+// Two records of one case on one backend (two files concatenated, a record
+// pasted twice): compare kept one without a word and report counted both.
+TEST(ResultsFile, ASecondRecordOfOneCaseIsUsageErrorNamingBothLines) {
+  testing::TempDir dir;
+  const std::string one = toResultsJsonLines({result("a/b/c", Status::Pass)});
+  const std::string other = toResultsJsonLines({result("d/e/f", Status::Pass)});
+  try {
+    readResultsFile(dir.write("r.jsonl", one + other + one));
+    ADD_FAILURE() << "read two records of one case";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "r.jsonl:3: a second result of a/b/c on vk (the first is line 1)"),
+              std::string::npos)
+        << e.what();
+  }
+  CaseResult gl = result("a/b/c", Status::Pass);
+  gl.backend = "gl";
+  EXPECT_EQ(readResultsFile(dir.write("two.jsonl", one + toResultsJsonLines({gl}))).size(), 2u);
+}
+
+// A run's FILE.partial that is still there is a run that was killed: read
+// as incomplete, as an interrupted run's file is, not as a finished run.
+TEST(ResultsFile, AKilledRunsPartialFileIsReadAsIncomplete) {
+  testing::TempDir dir;
+  const std::string text = toResultsJsonLines({result("a/b/c", Status::Pass)});
+  bool incomplete = false;
+  EXPECT_EQ(readFinishedResultsFile(dir.write("r.jsonl.partial", text), &incomplete).size(), 1u);
+  EXPECT_TRUE(incomplete);
+  EXPECT_EQ(readFinishedResultsFile(dir.write("r.jsonl", text), &incomplete).size(), 1u);
+  EXPECT_FALSE(incomplete);
+  // An empty file is no run, except where a shard with no cases is allowed.
+  const auto empty = dir.write("e.jsonl", "");
+  EXPECT_THROW(readFinishedResultsFile(empty), UsageError);
+  EXPECT_TRUE(readFinishedResultsFile(empty, nullptr, EmptyResults::Allowed).empty());
+}
+
 }  // namespace
 }  // namespace snell
