@@ -15,6 +15,7 @@
 #include "core/scene.h"
 #include "core/scene_file.h"
 #include "runner/image_check.h"
+#include "runner/interrupt_flag.h"
 
 namespace snell::bench {
 namespace {
@@ -122,9 +123,30 @@ BenchResults runBench(const BenchOptions& options,
   const LadderReference references(methods, baseScene, errorSize, options.referenceWavelengths);
   results.reference = references.model();
 
+  // Every method is drawn once on every backend before any is timed: one
+  // that does not compile stops the bench before minutes of timing, not
+  // after (the pipelines stay compiled for the timing).
+  std::vector<std::unique_ptr<Backend>> backends;
   for (const std::string& backendName : options.backends) {
-    std::unique_ptr<Backend> backend = makeBackend(backendName, {});
+    backends.push_back(makeBackend(backendName, {}));
     for (const Manifest& m : methods) {
+      Scene scene = baseScene;
+      scene.width = scene.height = options.resolutions.front();
+      renderOrThrow(*backends.back(), sceneRenderJob(m, scene, resolveBindings(m, scene)), m);
+    }
+  }
+
+  const std::size_t total = backends.size() * methods.size();
+  for (std::unique_ptr<Backend>& backend : backends) {
+    for (const Manifest& m : methods) {
+      if (const int signal = interruptReceived())
+        throw Interrupted(
+            signal,
+            fmt::format("bench interrupted by {} after {} of {} methods of {} were measured: "
+                        "bench.json, the table and the charts are written when a ladder ends, "
+                        "so none was written for it (ladders finished before it are kept)",
+                        signalName(signal), results.records.size(), total,
+                        options.methodsDir.string()));
       BenchRecord record;
       record.method = m.id;
       record.title = m.title;

@@ -20,6 +20,7 @@
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
+#include "runner/interrupt_flag.h"
 
 namespace snell::cli {
 
@@ -129,12 +130,14 @@ Command addBenchCommand(CLI::App& app) {
       ->add_option("--reference-wavelengths", options->run.referenceWavelengths,
                    "Wavelengths of a dispersion ladder's spectral reference")
       ->capture_default_str();
-  bench
-      ->add_option("--out", options->out,
-                   "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
-                   "vertices.svg/png, wavelengths.svg/png, images/; ablation.json")
-      ->capture_default_str()
-      ->check(nonEmptyPath());
+  CLI::Option* outOption =
+      bench
+          ->add_option("--out", options->out,
+                       "Output folder: per ladder bench.json, pareto.svg/png, angle.svg/png, "
+                       "vertices.svg/png, wavelengths.svg/png, images/; ablation.json (one "
+                       "--methods ladder without --out: OUT/LADDER, where `advise` reads it)")
+          ->capture_default_str()
+          ->check(nonEmptyPath());
   bench
       ->add_option("--metric", options->metric,
                    "Error on the chart's axis and for the table's front: rms, max, de_mean, "
@@ -147,7 +150,7 @@ Command addBenchCommand(CLI::App& app) {
       "pipeline is compiled, with the 10th-90th percentile spread. Error: RMS and largest "
       "channel difference in linear RGB, mean and 95th percentile CIEDE2000, at the largest "
       "resolution, over the pixels both images cover. Timing is measured, never asserted.");
-  return [options] {
+  return [options, outOption] {
     bench::errorMetric({}, options->metric);  // refuse an unknown metric before drawing
     // Each backend once: a second timing of it would be a second record
     // under one key, which `advise` refuses.
@@ -170,7 +173,13 @@ Command addBenchCommand(CLI::App& app) {
     // a folder of its own; a folder of methods is one ladder.
     std::vector<std::pair<std::filesystem::path, std::filesystem::path>> ladders;
     if (isLadder(options->run.methodsDir)) {
-      ladders.push_back({options->run.methodsDir, out});
+      // Without --out, one ladder goes where `advise --ladder` reads it,
+      // as each of a folder of ladders does.
+      ladders.push_back(
+          {options->run.methodsDir,
+           outOption->count() > 0
+               ? out
+               : out / std::filesystem::weakly_canonical(options->run.methodsDir).filename()});
     } else {
       for (const auto& entry : std::filesystem::directory_iterator(options->run.methodsDir))
         if (entry.is_directory() && isLadder(entry.path()))
@@ -181,6 +190,8 @@ Command addBenchCommand(CLI::App& app) {
       throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
                                    options->run.methodsDir.string()));
     std::string files;
+    // Ctrl-C stops the bench before its next method (bench_runner.cpp).
+    const InterruptFlag interrupt;
     for (const auto& [methods, dir] : ladders) {
       bench::BenchOptions run = options->run;
       run.methodsDir = methods;

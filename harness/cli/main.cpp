@@ -65,6 +65,9 @@ int main(int argc, char** argv) {
     }
     for (const auto& [sub, run] : commands)
       if (sub->parsed()) return run();
+  } catch (const snell::Interrupted& stopped) {
+    fmt::print(stderr, "snell: {}\n", stopped.what());
+    return 128 + stopped.signal;
   } catch (const snell::UsageError& error) {
     fmt::print(stderr, "snell: {}\n", error.what());
     return 2;

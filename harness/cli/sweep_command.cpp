@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <system_error>
 
 #include "cli/backend_options.h"
 #include "cli/commands.h"
@@ -14,6 +15,7 @@
 #include "core/manifest.h"
 #include "runner/backend_probe.h"
 #include "runner/builtin_eval.h"
+#include "runner/interrupt_flag.h"
 #include "sweep/listing_capture.h"
 #include "sweep/sweep_charts.h"
 #include "sweep/sweep_report.h"
@@ -135,7 +137,19 @@ Command addSweepCommand(CLI::App& app) {
             probe.problem.find("snell devices") == std::string::npos ? " (`snell devices`)" : ""));
       sweepOptions.rules.push_back(precisionRulesForApi(probe.driver.api));
     }
-    sweep::SweepResult result = sweep::runSweep(sweepOptions);
+    // Ctrl-C stops the drivers' children and the sweep at its next step
+    // (sweep_run.cpp), removing what it had written.
+    const InterruptFlag interrupt;
+    const fs::path made = firstMissingFolder(options->out);
+    sweep::SweepResult result = [&] {
+      try {
+        return sweep::runSweep(sweepOptions);
+      } catch (const Interrupted&) {
+        std::error_code ignored;
+        if (!made.empty()) fs::remove_all(made, ignored);  // the --out folder it made, empty
+        throw;
+      }
+    }();
     for (std::size_t k = 0; k < probes.size(); ++k)
       result.sweeps[k + 1].renderer = probes[k].driver.renderer;
     const fs::path json =

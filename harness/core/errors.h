@@ -16,6 +16,14 @@ struct SetupError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A command stopped part way by SIGINT or SIGTERM (runner/interrupt_flag.h):
+// exit 128 + the signal, with what became of its work as the message.
+struct Interrupted : std::runtime_error {
+  Interrupted(int signalNumber, const std::string& what)
+      : std::runtime_error(what), signal(signalNumber) {}
+  int signal;
+};
+
 // A library's exception text as a user reads it inside a message:
 // nlohmann's "[json.exception.out_of_range.403] key 'x' not found" without
 // its bracketed id.

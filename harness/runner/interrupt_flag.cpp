@@ -71,6 +71,19 @@ InterruptFlag::~InterruptFlag() {
 
 int InterruptFlag::signal() const { return received; }
 
+int interruptReceived() { return received; }
+
+const char* signalName(int signal) {
+  switch (signal) {
+    case SIGINT:
+      return "SIGINT";
+    case SIGTERM:
+      return "SIGTERM";
+    default:
+      return "a signal";
+  }
+}
+
 const volatile std::sig_atomic_t* InterruptFlag::flag() const { return &received; }
 
 }  // namespace snell

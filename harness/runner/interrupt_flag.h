@@ -27,6 +27,14 @@ class InterruptFlag {
   struct sigaction previousInt_, previousTerm_;
 };
 
+// The signal a live InterruptFlag has received, or 0: for work that runs
+// far from the flag (a sweep's driver children, a bench's methods) to stop
+// at its next step.
+int interruptReceived();
+
+// "SIGINT", "SIGTERM" or "signal N".
+const char* signalName(int signal);
+
 // The line stderr gets on the second signal (for the tests).
 inline constexpr char kStoppedAtOnceMessage[] =
     "snell: a second interrupt: stopped at once; files being written may be incomplete\n";

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -13,6 +14,7 @@
 
 #include "core/errors.h"
 #include "core/scene.h"
+#include "runner/interrupt_flag.h"
 #include "runner/worker_process.h"
 
 namespace snell::sweep {
@@ -106,7 +108,7 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
   signal(SIGPIPE, SIG_IGN);
   std::vector<DrawCapture> captures(drawCount);
   std::size_t next = 0;
-  for (int children = 0; next < drawCount; ++children) {
+  for (int children = 0; next < drawCount && !interruptReceived(); ++children) {
     if (children == maxChildren) {
       for (std::size_t k = next; k < drawCount; ++k)
         captures[k].problem = fmt::format("not run: {} driver children ended early", children);
@@ -121,13 +123,13 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
     auto deadline = std::chrono::steady_clock::now() +
                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                         std::chrono::duration<double>(timeoutSeconds));
-    while (!child.stdoutClosed() && next < drawCount) {
+    while (!child.stdoutClosed() && next < drawCount && !interruptReceived()) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
           deadline - std::chrono::steady_clock::now());
       if (left.count() <= 0) break;
       std::vector<pollfd> fds = {{child.stdoutFd(), POLLIN, 0}};
       if (child.stderrFd() >= 0) fds.push_back({child.stderrFd(), POLLIN, 0});
-      poll(fds.data(), fds.size(), static_cast<int>(left.count()) + 1);
+      poll(fds.data(), fds.size(), static_cast<int>(std::min<long>(left.count() + 1, 200)));
       if (fds.size() > 1 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR))) child.drainStderr();
       if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
       for (const std::string& line : child.readLines()) {
@@ -147,6 +149,10 @@ std::vector<DrawCapture> captureDraws(const std::string& executable, const std::
     }
     if (next >= drawCount) {
       child.finish(false);
+      break;
+    }
+    if (interruptReceived()) {
+      child.finish(true);
       break;
     }
     const bool hung = !child.stdoutClosed();

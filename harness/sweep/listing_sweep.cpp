@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/scene.h"
 #include "oracle/vertex_oracle.h"
+#include "runner/interrupt_flag.h"
 #include "sweep/listing_capture.h"
 
 namespace snell::sweep {
@@ -116,6 +117,10 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
     }));
   std::vector<std::vector<DrawCapture>> captures;
   for (auto& r : running) captures.push_back(r.get());
+  if (interruptReceived()) {
+    std::filesystem::remove(jobFile);
+    return result;  // the caller stops the sweep
+  }
 
   for (std::size_t d = 0; d < draws.size(); ++d) {
     const PreparedDraw draw = prepareDraw(draws[d], base);

@@ -4,6 +4,7 @@
 #include <poll.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "oracle/builtin_probe.h"
+#include "runner/interrupt_flag.h"
 #include "runner/worker_process.h"
 
 namespace snell::sweep {
@@ -115,13 +117,15 @@ std::vector<Observation> runEvalChild(const std::string& executable, const std::
                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                             std::chrono::duration<double>(timeoutSeconds));
   std::size_t answered = 0;
-  while (!child.stdoutClosed()) {
+  while (!child.stdoutClosed() && !interruptReceived()) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) break;
     std::vector<pollfd> fds = {{child.stdoutFd(), POLLIN, 0}};
     if (child.stderrFd() >= 0) fds.push_back({child.stderrFd(), POLLIN, 0});
-    poll(fds.data(), fds.size(), static_cast<int>(left.count()) + 1);
+    // A signal reaches this thread or another: the wait is short enough
+    // to see it soon either way.
+    poll(fds.data(), fds.size(), static_cast<int>(std::min<long>(left.count() + 1, 200)));
     if (fds.size() > 1 && (fds[1].revents & (POLLIN | POLLHUP | POLLERR))) child.drainStderr();
     if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
     for (const std::string& line : child.readLines()) {
@@ -134,12 +138,14 @@ std::vector<Observation> runEvalChild(const std::string& executable, const std::
       ++answered;
     }
   }
-  hung = !child.stdoutClosed();
-  const std::string how = child.finish(hung);
+  const bool stopped = interruptReceived() != 0;
+  hung = !stopped && !child.stdoutClosed();
+  const std::string how = child.finish(hung || stopped);
   const std::string problem =
-      hung ? fmt::format("no answer within {:.3g} s (--timeout)", timeoutSeconds)
-           : fmt::format("snell eval --backend {} ended ({}) before answering: {}", backend, how,
-                         child.stderrTail(3));
+      stopped ? std::string("interrupted")
+      : hung  ? fmt::format("no answer within {:.3g} s (--timeout)", timeoutSeconds)
+              : fmt::format("snell eval --backend {} ended ({}) before answering: {}", backend, how,
+                            child.stderrTail(3));
   for (std::size_t k = answered; k < pointCount; ++k) {
     observations[k].problem = problem;
     observations[k].timedOut = hung;
@@ -160,6 +166,7 @@ struct DriverRun {
   // Runs `subset` in one child; points a crash left unanswered are run
   // again in halves, so a crash lands on the point that causes it.
   void run(const std::vector<std::size_t>& subset) {
+    if (interruptReceived()) return;
     std::vector<SweepPoint> chosen;
     for (std::size_t k : subset) chosen.push_back(points[k]);
     const std::filesystem::path input =

@@ -1,9 +1,14 @@
 #include "sweep/sweep_run.h"
 
+#include <fmt/format.h>
+
 #include <chrono>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
 
 #include "core/errors.h"
+#include "runner/interrupt_flag.h"
 #include "sweep/sweep_backend_run.h"
 
 namespace snell::sweep {
@@ -18,6 +23,23 @@ void classifyAll(SweepResult& result) {
   result.methodBreaks = classifyMethods(result.methodSamples);
 }
 
+namespace {
+
+// Between the sweep's phases: a Ctrl-C stops the drivers' children at once
+// (sweep_backend_run.cpp, listing_capture.cpp) and the sweep here.
+void stopIfInterrupted(const std::filesystem::path& input) {
+  const int signal = interruptReceived();
+  if (signal == 0) return;
+  std::error_code ignored;
+  std::filesystem::remove(input, ignored);
+  throw Interrupted(signal, fmt::format("sweep interrupted by {}: sweep.json and the charts are "
+                                        "written when the sweep ends, so none was written, and "
+                                        "its input and temporary files are removed",
+                                        signalName(signal)));
+}
+
+}  // namespace
+
 SweepResult runSweep(const SweepOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SweepResult result;
@@ -31,11 +53,13 @@ SweepResult runSweep(const SweepOptions& options) {
     file << evalInput(result.points);
     if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
   }
-  for (const std::string& backend : options.backends)
+  for (const std::string& backend : options.backends) {
     result.sweeps.push_back(
         options.builtins ? sweepDriver(options.executable, backend, result.points, options.outDir,
                                        options.timeoutSeconds, 40, options.driverArgs)
                          : BackendSweep{backend, "", {}});
+    stopIfInterrupted(input);
+  }
   classifyAll(result);
   if (!options.listings.empty()) {
     ListingSweepOptions listing;
@@ -48,6 +72,7 @@ SweepResult runSweep(const SweepOptions& options) {
     listing.outDir = options.outDir;
     listing.quick = options.quick;
     result.listings = runListingSweep(listing);
+    stopIfInterrupted(input);
     result.listingsSwept = true;
   }
   result.wallSeconds =

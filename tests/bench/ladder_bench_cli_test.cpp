@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "../cli/snell_process.h"
@@ -97,4 +98,46 @@ TEST(RefractionBenchCli, EachModelledInterfaceBringsAMethodNearer) {
 }
 
 }  // namespace
+// One ladder benched without --out goes where `advise --ladder` reads it
+// (snell-bench/LADDER/bench.json): it went to snell-bench/bench.json, and
+// advise then said to run `snell bench` first.
+TEST(LadderBenchCli, OneLadderWithoutOutIsWhereAdviseReadsIt) {
+  const fs::path cwd = fs::temp_directory_path() / fmt::format("snell_bench_cwd.{}", getpid());
+  fs::remove_all(cwd);
+  fs::create_directories(cwd);
+  const std::string here = fmt::format("cd {} &&", cwd.string());
+  const Outcome bench =
+      runSnell(fmt::format("bench --methods {}/shaders/methods/fresnel/ --backends vk "
+                           "--resolutions 16 --tessellations 6 --repeats 1 --warmup 0 "
+                           "--no-ablation",
+                           SNELL_SOURCE_ROOT),
+               here);
+  ASSERT_EQ(bench.code, 0) << bench.out;
+  EXPECT_TRUE(fs::exists(cwd / "snell-bench" / "fresnel" / "bench.json"));
+  const Outcome advise = runSnell("advise --scene sphere --budget 1000", here);
+  EXPECT_EQ(advise.code, 0) << advise.out;
+  fs::remove_all(cwd);
+}
+
+// A method that does not compile stops the bench before any method is
+// timed: it stopped it after minutes of timing the ones before it, which
+// were then lost.
+TEST(LadderBenchCli, AMethodThatDoesNotCompileStopsTheBenchBeforeAnyTiming) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell_broken_ladder.{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy(fs::path(SNELL_SOURCE_ROOT) / "shaders/methods/fresnel", dir / "fresnel",
+           fs::copy_options::recursive);
+  std::ofstream(dir / "fresnel/6-exact-fragment/exact.frag", std::ios::app) << "\nnot glsl;\n";
+  const Outcome run = runSnell(
+      fmt::format("bench --methods {} --backends gl --resolutions 16 --tessellations 6 --repeats 1 "
+                  "--warmup 0 --no-ablation --out {}",
+                  (dir / "fresnel").string(), (dir / "out").string()));
+  EXPECT_EQ(run.code, 2) << run.out;
+  EXPECT_NE(run.out.find("exact.frag"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("ms per frame"), std::string::npos)
+      << "timed before refusing: " << run.out;
+  fs::remove_all(dir);
+}
+
 }  // namespace snell::testing

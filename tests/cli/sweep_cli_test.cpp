@@ -4,14 +4,18 @@
 // charts and wall time are there.
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "snell_process.h"
 
@@ -170,6 +174,43 @@ TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2) {
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
   const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
   EXPECT_EQ(o.code, 2) << o.out;
+}
+
+// Ctrl-C stopped a sweep with no word and left its input and job files
+// in --out, beside an earlier sweep's results; a bench lost the methods it
+// had measured without a word. Each now says what became of its work, exit
+// 130, and leaves nothing half written: the sweep removes the --out folder
+// it made, the bench writes no bench.json for the ladder it was in.
+TEST(SweepCli, InterruptedSweepAndBenchSayWhatBecameOfTheirWork) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-sweep-int-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto interrupted = [&](const std::vector<std::string>& args, const char* name) {
+    const fs::path err = dir / (std::string(name) + ".err");
+    const pid_t pid = spawnSnell(args, err.string());
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    ::kill(pid, SIGINT);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFEXITED(status)) << name << " ended by the signal itself";
+    EXPECT_EQ(WEXITSTATUS(status), 128 + SIGINT) << name;
+    return readText(err);
+  };
+  const std::string sweep =
+      interrupted({"sweep", "--backend", "vk", "--out", (dir / "sweep").string()}, "sweep");
+  EXPECT_NE(sweep.find("sweep interrupted by SIGINT: sweep.json and the charts are written when "
+                       "the sweep ends, so none was written"),
+            std::string::npos)
+      << sweep;
+  EXPECT_FALSE(fs::exists(dir / "sweep")) << "the --out folder it made is left";
+
+  const std::string bench = interrupted(
+      {"bench", "--methods", std::string(SNELL_SOURCE_ROOT) + "/shaders/methods/fresnel",
+       "--backends", "gl", "--no-ablation", "--out", (dir / "bench").string()},
+      "bench");
+  EXPECT_NE(bench.find("bench interrupted by SIGINT after "), std::string::npos) << bench;
+  EXPECT_FALSE(fs::exists(dir / "bench" / "bench.json"));
+  fs::remove_all(dir);
 }
 
 }  // namespace
