@@ -57,14 +57,17 @@ class ChartData {
   std::map<std::string, std::string> rows_;
 };
 
-// A curve whose file is empty plots its style as a gnuplot expression.
 // Point types cycle (open circle, cross, filled circle, ...) and shrink
-// along the series, so backends that break at the same points show as
-// nested marks (a ring, a cross inside it, a dot inside that) instead of
-// the last one drawn alone.
+// along the series, so series that break at the same points (backends, or
+// kinds of break) show as nested marks (a ring, a cross inside it, a dot
+// inside that) instead of the last one drawn alone. The largest is large
+// enough that the ones inside it stay apart from it.
+constexpr int kPointTypes[] = {6, 2, 7, 4, 1, 8, 12, 10};
+constexpr double kPointSizes[] = {1.7, 1.2, 0.6, 1.4, 0.9, 0.5, 1.1, 0.7};
+constexpr std::size_t kPointStyles = std::size(kPointTypes);
+
+// A curve whose file is empty plots its style as a gnuplot expression.
 std::string plotCommands(const std::vector<Curve>& curves) {
-  static const int kPointTypes[] = {6, 2, 7, 4, 1, 8};
-  static const double kPointSizes[] = {0.8, 0.6, 0.35, 0.7, 0.5, 0.3};
   std::string plot = "plot ";
   for (std::size_t k = 0; k < curves.size(); ++k) {
     plot += k ? ", " : "";
@@ -73,7 +76,8 @@ std::string plotCommands(const std::vector<Curve>& curves) {
     else
       plot += fmt::format("'{}' using 1:2 {}{} title '{}'", curves[k].file, curves[k].style,
                           curves[k].style.find("points") != std::string::npos
-                              ? fmt::format(" pt {} ps {}", kPointTypes[k % 6], kPointSizes[k % 6])
+                              ? fmt::format(" pt {} ps {}", kPointTypes[k % kPointStyles],
+                                            kPointSizes[k % kPointStyles])
                               : "",
                           curves[k].title);
   }
@@ -91,13 +95,16 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
   std::replace_if(
       name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); },
       '_');
+  // Wide enough for a legend beside the plot and a title of a hundred and
+  // forty characters above it (gnuplot centres the title on the plot, not
+  // on the picture: at 900 pixels the longer ones were cut at both ends).
   batch.add(fmt::format(
-      "set terminal svg size 900,540 font 'sans,10' background '#ffffff' standalone noenhanced "
+      "set terminal svg size 1100,560 font 'sans,10' background '#ffffff' standalone noenhanced "
       "name '{}'\nset output '{}.svg'\n{}",
       name, stem, body));
   batch.add(fmt::format(
-      "set terminal pngcairo size 900,540 font 'sans,10' noenhanced\nset output '{}.png'\n{}", stem,
-      body));
+      "set terminal pngcairo size 1100,560 font 'sans,10' noenhanced\nset output '{}.png'\n{}",
+      stem, body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
 }
@@ -122,10 +129,14 @@ std::string quotable(std::string text) {
 }
 
 // Class as colour (the same as the HTML report's), kind as point shape.
-std::string classColour(const std::string& cls) {
+// Each kind of break its own colour, so that a map of eight kinds of one
+// class can be read; red is kept for the implementation's (a driver's)
+// breaks alone, the finding that matters most.
+std::string kindColour(const std::string& cls, std::size_t kind) {
+  static const char* const kOthers[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#9467bd", "#8c564b",
+                                        "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
   if (cls == "implementation") return "#d62728";
-  if (cls == "undefined") return "#5b5bd6";
-  return "#ff7f0e";  // method
+  return kOthers[kind % std::size(kOthers)];
 }
 
 // One map per listing and backend over angle x eta: where the listing
@@ -153,8 +164,9 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
     for (const auto& [classKind, rows] : curves) {
       const std::string file = fmt::format("sweep-data/{}-{}.dat", stem, n++);
       std::ofstream(outDir / file) << rows;
-      plotted.push_back({fmt::format("{} ({})", classKind.second, classKind.first), file,
-                         fmt::format("with points lc rgb '{}'", classColour(classKind.first))});
+      plotted.push_back(
+          {fmt::format("{} ({})", classKind.second, classKind.first), file,
+           fmt::format("with points lc rgb '{}'", kindColour(classKind.first, plotted.size()))});
     }
     const std::string angles =
         backFaces[key] ? "set xrange [0:180]\nset xlabel 'incidence angle (degrees; past 90: "
@@ -209,20 +221,26 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
   const std::string angleAxis =
       "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\n"
       "set key outside right\n";
-  addChart(batch, written, outDir, "sweep-refract-slack",
-           angleAxis +
-               "set title 'refract(): slack (error / allowed error) against angle, eta 0.66, "
-               "1/1.5 and 1.5 where swept (total internal reflection, the zero vector, at 0)'\n"
-               "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
-           data.curves("slack/refract/", "with points"));
-  addChart(batch, written, outDir, "sweep-reflect-slack",
-           angleAxis +
-               fmt::format("set title 'reflect(): slack (error / allowed error) against angle{}'\n"
-                           "set ylabel 'slack (1 = edge of the spec)'\nset yrange [{}]\n",
-                           // All 0 is a result: said, and the points kept off the axis line.
-                           reflectWorst > 0 ? "" : " (every result exact: slack 0 throughout)",
-                           reflectWorst > 0 ? "0:*" : "-0.05:1"),
-           data.curves("slack/reflect/", "with points"));
+  // Without the built-ins (--no-builtins) their charts would be empty
+  // plots that read as "no breaks": not drawn.
+  const bool builtins = !result.points.empty();
+  if (builtins)
+    addChart(batch, written, outDir, "sweep-refract-slack",
+             angleAxis +
+                 "set title 'refract(): slack (error / allowed error) against angle, eta 0.66, "
+                 "1/1.5 and 1.5 where swept (total internal reflection, the zero vector, at 0)'\n"
+                 "set ylabel 'slack (1 = edge of the spec)'\nset yrange [0:*]\n",
+             data.curves("slack/refract/", "with points"));
+  if (builtins)
+    addChart(
+        batch, written, outDir, "sweep-reflect-slack",
+        angleAxis +
+            fmt::format("set title 'reflect(): slack (error / allowed error) against angle{}'\n"
+                        "set ylabel 'slack (1 = edge of the spec)'\nset yrange [{}]\n",
+                        // All 0 is a result: said, and the points kept off the axis line.
+                        reflectWorst > 0 ? "" : " (every result exact: slack 0 throughout)",
+                        reflectWorst > 0 ? "0:*" : "-0.05:1"),
+        data.curves("slack/reflect/", "with points"));
   addChart(batch, written, outDir, "sweep-method-error",
            angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
                                    "(bound {})'\nset ylabel 'error'\n"
@@ -235,9 +253,10 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
       "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
       "set key outside right\nset samples 1000\n";
-  addChart(batch, written, outDir, "sweep-map-refract",
-           mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
-           withCriticalAngle(data.curves("map/refract/", "with points")));
+  if (builtins)
+    addChart(batch, written, outDir, "sweep-map-refract",
+             mapAxes + "set title 'refract(): where each backend breaks, and why'\n",
+             withCriticalAngle(data.curves("map/refract/", "with points")));
   addChart(batch, written, outDir, "sweep-map-methods",
            mapAxes + fmt::format("set title 'Fresnel methods: breaks against exact Fresnel "
                                  "(error bound {}, physical range)'\n",

@@ -125,7 +125,10 @@ TEST(SweepCli, EachListingGetsAMapPerBackend) {
   const std::string svg = readText(out / (stem + ".svg"));
   EXPECT_NE(svg.find("zero_where_physics_refracts, stretched (method)"), std::string::npos)
       << "the stretched model's total internal reflection, the method's";
-  EXPECT_NE(svg.find("rgb(255, 127,  14)"), std::string::npos) << "method in orange";
+  // Each kind its own colour, the first blue; red is the implementation's
+  // alone, and this listing's one kind is the method's.
+  EXPECT_NE(svg.find("rgb( 31, 119, 180)"), std::string::npos) << "the first kind in blue";
+  EXPECT_EQ(svg.find("rgb(214,  39,  40)"), std::string::npos) << "red is for drivers' breaks";
   EXPECT_NE(o.out.find("chart: " + (out / (stem + ".svg")).string()), std::string::npos);
   fs::remove_all(out);
 }
@@ -174,6 +177,21 @@ TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2) {
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
   const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
   EXPECT_EQ(o.code, 2) << o.out;
+}
+
+// Without the built-ins their charts were drawn empty, reading as "no
+// breaks": they are left out, and the listings' maps drawn.
+TEST(SweepCli, WithoutTheBuiltinsTheirChartsAreNotDrawn) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-nb-{}", ::getpid());
+  fs::remove_all(out);
+  const Outcome o = runSnell(fmt::format(
+      "sweep --backend vk --quick --no-builtins --listings 'orange-book/14.1-fresnel' --out {}",
+      out.string()));
+  ASSERT_EQ(o.code, 0) << o.out;
+  for (const char* chart : {"sweep-refract-slack", "sweep-reflect-slack", "sweep-map-refract"})
+    EXPECT_FALSE(fs::exists(out / (std::string(chart) + ".png"))) << chart;
+  EXPECT_TRUE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
+  fs::remove_all(out);
 }
 
 // Ctrl-C stopped a sweep with no word and left its input and job files
