@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 #include <fmt/ostream.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 
 namespace snell {
@@ -91,6 +93,12 @@ void printBaselineReport(std::ostream& out, const ExpectationSet& expectations,
              report.count(Outcome::UnexpectedFail), report.count(Outcome::ExpectedFail),
              report.count(Outcome::KnownFlake), report.count(Outcome::Flake),
              report.count(Outcome::UnexpectedPass), report.skipped.size(), report.absent.size());
+  // One fails line may cover several backends (a PREFIX-fails.txt is read
+  // for each): the backends on which each line's case still fails.
+  std::map<std::string, std::vector<std::string>> stillFailing;  // by FILE:LINE
+  for (const JudgedCase& c : report.cases)
+    if (c.knownFailure && c.outcome != Outcome::UnexpectedPass)
+      stillFailing[c.knownFailure->place.where()].push_back(c.result->backend);
   for (const JudgedCase& c : report.cases) {
     const CaseResult& r = *c.result;
     switch (c.outcome) {
@@ -116,8 +124,17 @@ void printBaselineReport(std::ostream& out, const ExpectationSet& expectations,
                    statusName(r.status), c.flakePattern->place.where(), c.flakePattern->pattern);
         break;
       case Outcome::UnexpectedPass:
-        fmt::print(out, "  improvement: {} {} is {}; delete {} `{}`\n", r.backend, r.caseId,
-                   statusName(r.status), c.knownFailure->place.where(), c.knownFailure->place.text);
+        if (const auto others = stillFailing.find(c.knownFailure->place.where());
+            others != stillFailing.end())
+          fmt::print(out,
+                     "  improvement: {} {} is {}; {} also covers {}, where it still fails: keep "
+                     "it, or give {} a fails file of its own\n",
+                     r.backend, r.caseId, statusName(r.status), c.knownFailure->place.where(),
+                     fmt::join(others->second, ", "), r.backend);
+        else
+          fmt::print(out, "  improvement: {} {} is {}; delete {} `{}`\n", r.backend, r.caseId,
+                     statusName(r.status), c.knownFailure->place.where(),
+                     c.knownFailure->place.text);
         break;
       case Outcome::ExpectedFail:
         fmt::print(

@@ -1,11 +1,14 @@
 #include "baseline/expectation_file.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <utility>
 
+#include "backends/backend_registry.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -61,6 +64,9 @@ void readFile(const fs::path& file, const std::string& today, std::vector<Entry>
   int number = 0;
   for (std::string raw; std::getline(in, raw);) {
     ++number;
+    // A byte order mark (an editor's UTF-8 with BOM) would make the first
+    // entry a name no case has.
+    if (number == 1 && raw.starts_with("\xEF\xBB\xBF")) raw.erase(0, 3);
     const std::string line = trim(raw);
     if (line.empty()) {
       pending = {};  // metadata belongs to the entry directly below it
@@ -153,11 +159,47 @@ Expectations readExpectationFiles(const fs::path& fails, const fs::path& flakes,
   return e;
 }
 
+namespace {
+
+// A folder's files are BACKEND-fails.txt, -flakes.txt and -skips.txt: one
+// named for no backend (vulkan-fails.txt), or a folder with none at all (a
+// wrong path), would be no expectations and pass the gate without a word.
+void requireBackendNamedFiles(const fs::path& folder) {
+  std::error_code error;
+  int found = 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    for (const char* suffix : {"-fails.txt", "-flakes.txt", "-skips.txt"}) {
+      if (!name.ends_with(suffix) || name.size() == std::string_view(suffix).size()) continue;
+      ++found;
+      const std::string backend = name.substr(0, name.size() - std::string_view(suffix).size());
+      const auto& entries = backendRegistry().entries();
+      if (std::none_of(entries.begin(), entries.end(),
+                       [&](const BackendEntry& e) { return e.name == backend; })) {
+        std::vector<std::string> names;
+        for (const BackendEntry& e : entries) names.push_back(e.name);
+        throw UsageError(fmt::format(
+            "{}: `{}` is no backend, so its entries would apply to none; name it BACKEND{} "
+            "for one of {}",
+            entry.path().string(), backend, suffix, fmt::join(names, ", ")));
+      }
+    }
+  }
+  if (found == 0)
+    throw UsageError(
+        fmt::format("{}: holds no expectation files (BACKEND-fails.txt, -flakes.txt, "
+                    "-skips.txt); give the folder that holds them",
+                    folder.string()));
+}
+
+}  // namespace
+
 ExpectationSet loadExpectations(const fs::path& source, const std::vector<std::string>& backends,
                                 const std::string& today) {
   ExpectationSet set;
   set.source = source.string();
   if (fs::is_directory(source)) {
+    requireBackendNamedFiles(source);
     for (const std::string& backend : backends)
       set.byBackend[backend] = readExpectationFiles(source / (backend + "-fails.txt"),
                                                     source / (backend + "-flakes.txt"),

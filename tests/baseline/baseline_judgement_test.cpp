@@ -120,6 +120,34 @@ TEST(BaselineJudgement, ResultsCsvUsesOnlyDeqpRunnersStatuses) {
             "gl/known/fail/a,UnexpectedImprovement(Pass),0.250\n");
 }
 
+// One PREFIX-fails.txt covers every backend: a line whose case passes on
+// one backend and still fails on another was to be deleted, which would
+// make the other's failure unexpected.
+TEST(BaselineJudgement, AnImprovementOnOneBackendOfASharedLineSaysToKeepIt) {
+  testing::TempDir dir;
+  const auto fails = dir.write("lo-fails.txt", "x/y/z,Fail\nboth/pass/a,Fail\n");
+  const ExpectationSet set = loadExpectations(fails, {"gl", "vk"}, "2026-11-25");
+  const auto on = [](const char* backend, const char* id, Status status) {
+    CaseResult r = result(id, status);
+    r.backend = backend;
+    return r;
+  };
+  const std::vector<CaseResult> results = {
+      on("gl", "x/y/z", Status::Fail), on("vk", "x/y/z", Status::Pass),
+      on("gl", "both/pass/a", Status::Pass), on("vk", "both/pass/a", Status::Pass)};
+  std::ostringstream out;
+  printBaselineReport(out, set, judgeResults(set, results, {}));
+  const std::string text = out.str();
+  EXPECT_NE(text.find("improvement: vk x/y/z is Pass; " + fails.string() +
+                      ":1 also covers gl, where it still fails: keep it"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("delete " + fails.string() + ":1"), std::string::npos) << text;
+  EXPECT_NE(text.find("improvement: gl both/pass/a is Pass; delete " + fails.string() + ":2"),
+            std::string::npos)
+      << text;
+}
+
 TEST(BaselineJudgement, JUnitShowsExpectedFailuresAsSkippedAndFlakesAsFlaky) {
   testing::TempDir dir;
   const ExpectationSet set = expectations(dir);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "core/errors.h"
 #include "test_files.h"
 
@@ -72,6 +74,26 @@ TEST(ExpectationFile, ExpiredEntryIsAnErrorAtItsLine) {
   // Expiring today is not expired yet.
   dir.write("gl-fails.txt", "# expires: 2026-11-25\na/b/c,Fail\n");
   EXPECT_EQ(usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); }), "");
+}
+
+// A folder whose files are named for no backend, or that holds none, was
+// read as no expectations: every known failure then failed the gate, or a
+// wrong path passed it. A byte order mark hid the first entry.
+TEST(ExpectationFile, AFolderMustHoldFilesNamedForBackends) {
+  testing::TempDir dir;
+  const std::string none = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(none.find("holds no expectation files"), std::string::npos) << none;
+  dir.write("vulkan-fails.txt", "a/b/c,Fail\n");
+  const std::string misnamed = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(misnamed.find("vulkan-fails.txt: `vulkan` is no backend"), std::string::npos)
+      << misnamed;
+  EXPECT_NE(misnamed.find("gl, "), std::string::npos) << misnamed;
+  std::filesystem::remove(dir.path() / "vulkan-fails.txt");
+  dir.write("vk-fails.txt",
+            "\xEF\xBB\xBF"
+            "a/b/c,Fail\n");
+  const ExpectationSet set = loadExpectations(dir.path(), {"vk"}, kToday);
+  EXPECT_NE(set.of("vk").knownFailure("a/b/c"), nullptr) << "the byte order mark kept";
 }
 
 TEST(ExpectationFile, MalformedEntriesNameFileAndLine) {
