@@ -15,6 +15,7 @@
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "cli/results_output.h"
+#include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "runner/cross_api_check.h"
@@ -40,11 +41,23 @@ void requireImagesToCompare(const std::vector<BackendPair>& pairs,
     for (const std::filesystem::path& image :
          {renderedImagePath(out, id, pair.a->backend), renderedImagePath(out, id, pair.b->backend),
           maskImagePath(out, id)})
-      if (!std::filesystem::is_regular_file(image))
+      if (!std::filesystem::is_regular_file(image)) {
         throw UsageError(fmt::format(
             "{}: missing, and the comparison of {} on {} and {} needs it; gather the shards' "
             "--out folders into one and pass it as --out DIR",
             image.string(), id, pair.a->backend, pair.b->backend));
+      } else {
+        // A damaged copy would be compared as a difference between the
+        // drivers (a CompatibilityWarning on both), which it is not.
+        try {
+          readImage(image);
+        } catch (const std::exception& error) {
+          throw UsageError(fmt::format(
+              "{}: cannot be read ({}), and the comparison of {} on {} and {} needs it; copy "
+              "it again from the shard's --out folder",
+              image.string(), error.what(), id, pair.a->backend, pair.b->backend));
+        }
+      }
   }
 }
 

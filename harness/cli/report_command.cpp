@@ -59,8 +59,11 @@ Command addReportCommand(CLI::App& app) {
                         file, options->out));
     }
     std::vector<ReportRun> runs;
-    for (const std::string& file : options->results)
-      runs.push_back({file, readFinishedResultsFile(file)});
+    for (const std::string& file : options->results) {
+      bool incomplete = false;
+      std::vector<CaseResult> results = readFinishedResultsFile(file, &incomplete);
+      runs.push_back({file, std::move(results), incomplete});
+    }
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     ReportOptions report;
     report.imagesDir = options->images;

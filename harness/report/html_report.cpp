@@ -116,6 +116,10 @@ class ReportBuilder {
       tallyList.push_back(t);
     }
     page.set("tally", tallyList);
+    data incompleteRuns = data::type::list;
+    for (const ReportRun& run : runs_)
+      if (run.incomplete) incompleteRuns.push_back(data("label", run.label));
+    page.set("incomplete_runs", incompleteRuns);
     list columns;
     for (const Column& c : columns_) columns.push_back(data("name", c.name));
     page.set("columns", columns);

@@ -19,6 +19,9 @@ namespace snell {
 struct ReportRun {
   std::string label;
   std::vector<CaseResult> results;
+  // An interrupted run (or a killed run's FILE.partial): its cases not
+  // reached are missing, which the page says at its top.
+  bool incomplete = false;
 };
 
 struct ReportOptions {

@@ -218,6 +218,21 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
       snell(fmt::format("merge {} {} --json {}", (scratch / "job1.jsonl").string(),
                         (scratch / "job1.jsonl").string(), (scratch / "bad.jsonl").string()));
   EXPECT_EQ(overlap.code, 2) << overlap.out;
+  // A damaged image was compared as a difference between the drivers (a
+  // CompatibilityWarning on both, exit 0): it is exit 2, naming it.
+  fs::path damaged;
+  for (const auto& entry : fs::recursive_directory_iterator(out))
+    if (entry.path().filename() == "vk.exr") damaged = entry.path();
+  ASSERT_FALSE(damaged.empty());
+  fs::resize_file(damaged, 500);
+  const Outcome broken =
+      snell(fmt::format("merge {} {} {} --out {} --json {}", (scratch / "job2.jsonl").string(),
+                        (scratch / "jobv.jsonl").string(), (scratch / "job1.jsonl").string(), out,
+                        (scratch / "broken.jsonl").string()));
+  EXPECT_EQ(broken.code, 2) << broken.out;
+  EXPECT_NE(broken.out.find(damaged.string() + ": cannot be read"), std::string::npos)
+      << broken.out;
+  EXPECT_FALSE(fs::exists(scratch / "broken.jsonl"));
 }
 
 std::size_t lineCount(const fs::path& path) {

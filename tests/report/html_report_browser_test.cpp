@@ -108,6 +108,31 @@ void writeImages(const fs::path& dir) {
   snell::writeImageAtomically(dir / "mask.exr", mask);
 }
 
+// An interrupted run was said on stderr only: the page, read later and
+// elsewhere, showed its missing cases as if the run had none.
+TEST(HtmlReport, AnInterruptedRunIsSaidAtTheTopOfThePage) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-int-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "images");
+  for (const bool interrupted : {true, false}) {
+    {
+      nlohmann::json r = record("gl", "Pass", 0);
+      if (interrupted) r["incomplete"] = true;
+      std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
+    }
+    const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                                               (dir / "results.jsonl").string(),
+                                               (dir / "html").string(), (dir / "images").string()));
+    ASSERT_EQ(code, 0) << out;
+    const std::string html = readText(dir / "html" / "index.html");
+    EXPECT_EQ(html.find("is an interrupted run: the cases it did not reach are missing") !=
+                  std::string::npos,
+              interrupted)
+        << html.substr(0, 3000);
+  }
+  fs::remove_all(dir);
+}
+
 TEST(HtmlReport, RendersInHeadlessChromiumWithEveryImageEmbedded) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-test-{}", getpid());
   fs::remove_all(dir);
