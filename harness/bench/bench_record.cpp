@@ -150,6 +150,10 @@ BenchResults readBenchResults(const std::filesystem::path& path) {
                     path.string()));
   try {
     const json doc = json::parse(in);
+    if (!doc.is_object())
+      throw std::invalid_argument(
+          fmt::format("it is a JSON {}, where bench.json is an object with `scene` and `records`",
+                      doc.type_name()));
     BenchResults results;
     results.scene = doc.at("scene").get<std::string>();
     results.reference = doc.value("reference", "");

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "bench/advisor.h"
@@ -22,9 +23,18 @@ nlohmann::json recordJson(const std::optional<bench::BenchRecord>& r, const std:
           {"de_p95", r->error.deP95}};
 }
 
-std::string recordText(const bench::BenchRecord& r, const std::string& metric) {
-  return fmt::format("{} ({:.3f} ms per frame, {} {:.4g})", bench::shortMethodName(r.method),
-                     r.msPerFrame(), metric, bench::errorMetric(r.error, metric));
+// The error to four digits, or to as many as it takes to differ from
+// `budget` where it is not equal to it ("no method within 0.0569; the most
+// accurate is 0.0569" read as a contradiction).
+std::string recordText(const bench::BenchRecord& r, const std::string& metric,
+                       double budget = std::numeric_limits<double>::quiet_NaN()) {
+  const double error = bench::errorMetric(r.error, metric);
+  int digits = 4;
+  while (digits < 17 && error != budget &&
+         fmt::format("{:.{}g}", error, digits) == fmt::format("{:.{}g}", budget, digits))
+    ++digits;
+  return fmt::format("{} ({:.3f} ms per frame, {} {:.{}g})", bench::shortMethodName(r.method),
+                     r.msPerFrame(), metric, error, digits);
 }
 
 }  // namespace
@@ -93,7 +103,8 @@ Command addAdviseCommand(CLI::App& app) {
         fmt::print("\n");
       } else {
         fmt::print("{}: no method within {} {}; the most accurate is {}\n", a.backend,
-                   options->metric, options->budget, recordText(*a.mostAccurate, options->metric));
+                   options->metric, options->budget,
+                   recordText(*a.mostAccurate, options->metric, options->budget));
       }
     }
     if (options->json) fmt::print("{}\n", doc.dump(2));

@@ -154,6 +154,15 @@ Command addSweepCommand(CLI::App& app) {
     }();
     for (std::size_t k = 0; k < probes.size(); ++k)
       result.sweeps[k + 1].renderer = probes[k].driver.renderer;
+    // Every point of a backend out of time is more likely a limit set too
+    // short than a driver that hangs on all of them: said beside the table.
+    for (const sweep::BackendSweep& s : result.sweeps)
+      if (!s.points.empty() && std::all_of(s.points.begin(), s.points.end(),
+                                           [](const sweep::Observation& o) { return o.timedOut; }))
+        fmt::print(stderr,
+                   "snell: note: every point on {} ran out of time: is --timeout {} s too short "
+                   "for this machine? (the default is 300)\n",
+                   s.backend, options->timeout);
     const fs::path json =
         options->json.empty() ? fs::path(options->out) / "sweep.json" : fs::path(options->json);
     sweep::writeSweepJson(result, json);

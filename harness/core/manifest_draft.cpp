@@ -472,8 +472,8 @@ std::string draftManifest(const DraftRequest& request) { return draftOf(request)
 Draft draftOf(const DraftRequest& request) {
   const fs::path& dir = request.dir;
   if (!fs::is_directory(dir))
-    throw UsageError(fmt::format("{}: no such folder; snell init DIR reads the GLSL files in DIR",
-                                 dir.string()));
+    throw UsageError(fmt::format("{}: {}; snell init DIR reads the GLSL files in DIR", dir.string(),
+                                 fs::exists(dir) ? "a file, not a folder" : "no such folder"));
   const Stage vertex =
       readStageFile(dir, stageFile(dir, request.vertexFile, ".vert", "vertex", "--vertex", true));
   std::optional<Stage> fragment;

@@ -120,7 +120,9 @@ void printListingTable(const ListingSweepResult& result, std::FILE* file) {
   for (const ListingBreakGroup& g : groupListingBreaks(result.breaks))
     fmt::print(file, "{:<44} {:<8} {:<9} {:<9} {:<20} {:<30} {:<14} {:>6}  {:<17} {}\n", g.listing,
                g.backend, g.output, g.frame, g.input, g.kind, g.cls, g.count,
-               range(g.angleMin, g.angleMax, 6), range(g.etaMin, g.etaMax, 4));
+               range(g.angleMin, g.angleMax, 6),
+               // A listing with no eta (diffraction) is drawn at eta 0.
+               g.etaMax > 0 ? range(g.etaMin, g.etaMax, 4) : std::string("-"));
   fmt::print(file,
              "\nlistings' total internal reflection (a refracted output turns to zero; closed "
              "form asin(1/eta)), unit frame, as published and eta > 1:\n");

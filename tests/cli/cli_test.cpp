@@ -258,6 +258,7 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"advise --scene sphere --budget 1 --results ''", "--results: an empty path"},
            // bench: each backend once, sizes increasing (the error is taken
            // at the last, which the charts call the largest).
+           {"init /dev/null", "/dev/null: a file, not a folder"},
            {"bench --backends vk,vk", "`vk` is named twice"},
            {"bench --resolutions 64,32", "--resolutions 64,32: give them in increasing order"},
            {"bench --resolutions 32,32", "--resolutions 32,32: give them in increasing order"}}) {
@@ -265,6 +266,21 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
   }
+}
+
+// A budget the most accurate method misses by less than the fourth digit:
+// its error is printed to as many digits as tell the two apart (it read
+// "no method within 0.05825; the most accurate is ... 0.05825").
+TEST(Cli, AdviseTellsAMissedBudgetFromTheErrorThatMissedIt) {
+  const Outcome o =
+      snell("advise --scene sphere --budget 0.05825 --backend vk --results " SNELL_SOURCE_ROOT
+            "/docs/bench/fresnel/bench.json");
+  EXPECT_EQ(o.code, 1) << o.out;
+  EXPECT_NE(o.out.find("no method within de_mean 0.05825; the most accurate is "
+                       "6-exact-fragment"),
+            std::string::npos)
+      << o.out;
+  EXPECT_NE(o.out.find("de_mean 0.058252)"), std::string::npos) << o.out;
 }
 
 // The validation layer is Vulkan's: on a run without Vulkan it checks

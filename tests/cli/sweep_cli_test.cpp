@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -191,6 +192,39 @@ TEST(SweepCli, WithoutTheBuiltinsTheirChartsAreNotDrawn) {
   for (const char* chart : {"sweep-refract-slack", "sweep-reflect-slack", "sweep-map-refract"})
     EXPECT_FALSE(fs::exists(out / (std::string(chart) + ".png"))) << chart;
   EXPECT_TRUE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
+  fs::remove_all(out);
+}
+
+// A listing with no eta (diffraction) is drawn at eta 0, which the table
+// printed as its eta; it says there is none.
+TEST(SweepCli, AListingWithNoEtaShowsNoneInTheTable) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-de-{}", ::getpid());
+  const Outcome o = runSnell(fmt::format(
+      "sweep --backend vk --quick --no-builtins --no-charts --listings 'blog/diffraction' --out {}",
+      out.string()));
+  ASSERT_TRUE(o.code == 0 || o.code == 1) << o.out;
+  std::istringstream lines(o.out);
+  int rows = 0;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("blog/diffraction ", 0) == 0) {
+      ++rows;
+      EXPECT_EQ(line.back(), '-') << line;
+    }
+  EXPECT_GT(rows, 0) << o.out;
+  fs::remove_all(out);
+}
+
+// Every point out of time read as a driver that hangs everywhere: the
+// note names the limit.
+TEST(SweepCli, EveryPointOutOfTimeNamesTheLimit) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-to-{}", ::getpid());
+  const Outcome o = runSnell(
+      fmt::format("sweep --backend vk --quick --listings '' --no-charts --timeout 0.001 --out {}",
+                  out.string()));
+  EXPECT_EQ(o.code, 1) << o.out;
+  EXPECT_NE(o.out.find("every point on vk ran out of time: is --timeout 0.001 s too short"),
+            std::string::npos)
+      << o.out;
   fs::remove_all(out);
 }
 
