@@ -20,7 +20,6 @@
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
-#include "core/output_ledger.h"
 #include "runner/interrupt_flag.h"
 
 namespace snell::cli {
@@ -196,9 +195,7 @@ Command addBenchCommand(CLI::App& app) {
     for (const auto& [methods, dir] : ladders) {
       bench::BenchOptions run = options->run;
       run.methodsDir = methods;
-      const OutputLedger ledger(dir);
       files += benchLadder(run, dir, options->metric);
-      printRemoved(ledger.settle(), dir, "bench");
     }
     if (!options->noAblation) {
       const bench::AblationTable table =

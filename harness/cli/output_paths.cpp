@@ -184,15 +184,4 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
   }
 }
 
-void printRemoved(const std::vector<fs::path>& removed, const fs::path& folder,
-                  const char* command) {
-  if (removed.empty()) return;
-  fmt::print(stderr,
-             "snell: removed {} file{} that an earlier {} wrote in {} and this one did not{}\n",
-             removed.size(), removed.size() == 1 ? "" : "s", command, folder.string(),
-             removed.size() == 1
-                 ? fmt::format(" ({})", removed.front().lexically_relative(folder).string())
-                 : "");
-}
-
 }  // namespace snell::cli

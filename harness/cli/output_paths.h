@@ -34,9 +34,4 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
 // that it leaves nothing behind that it made.
 std::filesystem::path firstMissingFolder(const std::filesystem::path& path);
 
-// Says which files of an earlier `command` run in the same folder were
-// removed (core/output_ledger.h), if any.
-void printRemoved(const std::vector<std::filesystem::path>& removed,
-                  const std::filesystem::path& folder, const char* command);
-
 }  // namespace snell::cli

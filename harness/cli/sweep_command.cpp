@@ -13,7 +13,6 @@
 #include "cli/output_paths.h"
 #include "core/errors.h"
 #include "core/manifest.h"
-#include "core/output_ledger.h"
 #include "runner/backend_probe.h"
 #include "runner/builtin_eval.h"
 #include "runner/interrupt_flag.h"
@@ -142,7 +141,6 @@ Command addSweepCommand(CLI::App& app) {
     // (sweep_run.cpp), removing what it had written.
     const InterruptFlag interrupt;
     const fs::path made = firstMissingFolder(options->out);
-    const OutputLedger ledger(options->out);
     sweep::SweepResult result = [&] {
       try {
         return sweep::runSweep(sweepOptions);
@@ -170,7 +168,6 @@ Command addSweepCommand(CLI::App& app) {
     if (!options->noCharts)
       for (const fs::path& chart : sweep::writeSweepCharts(result, options->out))
         fmt::print("chart: {}\n", chart.string());
-    printRemoved(ledger.settle(), options->out, "sweep");
     fmt::print("{} points on {} backend(s) and the oracle, {} Fresnel method samples; JSON: {}\n",
                result.points.size(), sweepOptions.backends.size(), result.methodSamples.size(),
                json.string());
