@@ -43,10 +43,11 @@ double schlick(double cosine, double n1, double n2) {
 
 }  // namespace
 
-double transmittedCosineSquared(double cosIncident, double n1, double n2) {
+double transmittedCosineSquared(double cosIncident, double n1In, double n2In) {
   checkCosine(cosIncident);
-  checkIndex(n1, "n1");
-  checkIndex(n2, "n2");
+  checkIndex(n1In, "n1");
+  checkIndex(n2In, "n2");
+  const auto [n1, n2] = scaledIndices(n1In, n2In);
   // (n2^2 - n1^2 + (n1 cos_i)^2) / n2^2, the numerator in double-double:
   // near the critical angle its terms cancel to almost nothing.
   const DoubleDouble n1cos = glsl::twoProduct(n1, cosIncident);
@@ -55,8 +56,9 @@ double transmittedCosineSquared(double cosIncident, double n1, double n2) {
   return glsl::toDouble(numerator) / (n2 * n2);
 }
 
-FresnelReflectance fresnelExact(double cosIncident, double n1, double n2) {
-  const double cos2t = transmittedCosineSquared(cosIncident, n1, n2);
+FresnelReflectance fresnelExact(double cosIncident, double n1In, double n2In) {
+  const double cos2t = transmittedCosineSquared(cosIncident, n1In, n2In);
+  const auto [n1, n2] = scaledIndices(n1In, n2In);
   // Equal indices are no interface: nothing is reflected. (Computed, cos_i
   // below 1e-154 squares to 0 and the ratios below would give 1.)
   if (n1 == n2 && cosIncident > 0.0) return {0.0, 0.0, 0.0, false};
@@ -74,9 +76,10 @@ FresnelReflectance fresnelExact(double cosIncident, double n1, double n2) {
   return r;
 }
 
-double normalIncidenceReflectance(double n1, double n2) {
-  checkIndex(n1, "n1");
-  checkIndex(n2, "n2");
+double normalIncidenceReflectance(double n1In, double n2In) {
+  checkIndex(n1In, "n1");
+  checkIndex(n2In, "n2");
+  const auto [n1, n2] = scaledIndices(n1In, n2In);
   return squaredRatio(n1 - n2, n1 + n2);
 }
 

@@ -23,10 +23,9 @@ double criticalAngleDegrees(double n1, double n2) {
         "a critical angle needs n1 > n2, light leaving the denser medium (got n1 = {}, n2 = {})",
         n1, n2));
   // atan2(n2, sqrt(n1^2 - n2^2)) rather than asin(n2 / n1): asin is
-  // ill-conditioned as n2 / n1 nears 1, and n1 - n2 is exact there. The
-  // root is taken of each factor, so that a huge index does not overflow
-  // the product (n1 = 1e200 gave 0).
-  return std::atan2(n2, std::sqrt(n1 - n2) * std::sqrt(n1 + n2)) * kDegreesPerRadian;
+  // ill-conditioned as n2 / n1 nears 1, and n1 - n2 is exact there.
+  const auto [a, b] = scaledIndices(n1, n2);
+  return std::atan2(b, std::sqrt((a - b) * (a + b))) * kDegreesPerRadian;
 }
 
 double brewsterAngleDegrees(double n1, double n2) {

@@ -51,6 +51,22 @@ TEST(Fresnel, EqualIndicesReflectNothing) {
   EXPECT_GT(fresnelExact(1e-300, 1.5, 1.5000001).unpolarised, 0.99);  // an interface: grazing
 }
 
+// Reflectance depends on the ratio of the indices only: indices near the
+// double range give what 10 and 1 give (their squares overflowed to a NaN,
+// which read as total reflection).
+TEST(Fresnel, HugeIndicesGiveWhatTheirRatioGives) {
+  for (const double cosine : {0.999, 0.5, 0.1}) {
+    EXPECT_NEAR(fresnelExact(cosine, 1e200, 1e199).unpolarised,
+                fresnelExact(cosine, 10.0, 1.0).unpolarised, 1e-15)
+        << cosine;
+    EXPECT_NEAR(fresnelExact(cosine, 1.0e308, 1.7e308).unpolarised,
+                fresnelExact(cosine, 1.0, 1.7).unpolarised, 1e-15)
+        << cosine;
+  }
+  EXPECT_NEAR(normalIncidenceReflectance(1.0e308, 1.7e308), normalIncidenceReflectance(1.0, 1.7),
+              1e-15);
+}
+
 TEST(Fresnel, GlassAtFortyFiveDegrees) {
   const FresnelReflectance r = fresnelExact(cosOfDegrees(45.0), 1.0, 1.5);
   EXPECT_NEAR(r.s, 0.0920, 5e-5);

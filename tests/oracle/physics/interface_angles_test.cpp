@@ -25,6 +25,9 @@ TEST(InterfaceAngles, CriticalAngleOfAHugeIndexDoesNotOverflow) {
   EXPECT_NEAR(criticalAngleDegrees(1e200, 1.0) / expected, 1.0, 1e-12);
   EXPECT_NEAR(criticalAngleDegrees(1e300, 1e299), std::asin(0.1) * 180.0 / 3.14159265358979323846,
               1e-12);
+  // n1 + n2 past the double range.
+  EXPECT_NEAR(criticalAngleDegrees(1.7e308, 1e308),
+              std::asin(1.0 / 1.7) * 180.0 / 3.14159265358979323846, 1e-12);
 }
 
 TEST(InterfaceAngles, CriticalAngleNeedsTheDenserSideFirst) {
