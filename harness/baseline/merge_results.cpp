@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <map>
-#include <ranges>
 #include <set>
 
 #include "baseline/driver_build.h"
@@ -15,41 +14,36 @@
 namespace snell {
 namespace {
 
-// Each backend's records say which shard of how many ran them: a merge
-// that lacks one of the shards would be a run with cases missing and no
-// word of it. A file with no results (a shard with no cases) may stand for
-// any one shard; records of a whole run, or written before records named
-// their shard, say nothing and are not counted.
+// Records say which shard of how many ran them: a merge that lacks one of
+// the shards would be a run with cases missing and no word of it. Shards
+// are counted over all files, not per backend: a shard may hold no record
+// of a backend (its cases skipped there, or the backend not up on that
+// runner). A file with no results (a shard with no cases) may stand for any
+// one shard; records of a whole run, or written before records named their
+// shard, say nothing and are not counted.
 void requireEveryShard(const std::vector<ResultsFile>& files) {
   std::size_t emptyFiles = 0;
-  std::map<std::string, std::map<std::size_t, std::set<std::size_t>>> seen;  // backend, N, I
+  std::map<std::size_t, std::set<std::size_t>> seen;  // shard count N -> indices I
   for (const ResultsFile& file : files) {
     if (file.results.empty()) ++emptyFiles;
     for (const CaseResult& r : file.results)
       if (!r.shard.empty()) {
         const Shard shard = parseShard(r.shard);
-        seen[r.backend][shard.count].insert(shard.index);
+        seen[shard.count].insert(shard.index);
       }
   }
-  for (const auto& [backend, counts] : seen) {
-    if (counts.size() > 1)
-      throw UsageError(
-          fmt::format("the {} results come from runs split {} ways: merge the shards of one run",
-                      backend, fmt::join(counts | std::views::keys, " and ")));
-    const auto& [count, indices] = *counts.begin();
+  for (const auto& [count, indices] : seen) {
     std::vector<std::string> missing;
     for (std::size_t i = 1; i <= count; ++i)
       if (!indices.contains(i)) missing.push_back(fmt::format("{}/{}", i, count));
     if (missing.size() > emptyFiles)
       throw UsageError(fmt::format(
-          "no {} results of shard {}{}: merge every shard's results file (an empty one "
-          "counts), or run the missing shard",
-          backend, fmt::join(missing, ", "),
-          emptyFiles > 0 ? (emptyFiles == 1 ? std::string(" (the empty file stands for one)")
-                                            : fmt::format(" ({} empty files stand for "
-                                                          "others)",
-                                                          emptyFiles))
-                         : ""));
+          "no results of shard {}{}: merge every shard's results file (an empty one counts), or "
+          "run the missing shard",
+          fmt::join(missing, ", "),
+          emptyFiles == 0   ? std::string()
+          : emptyFiles == 1 ? std::string(" (the empty file stands for one)")
+                            : fmt::format(" ({} empty files stand for others)", emptyFiles)));
   }
 }
 
