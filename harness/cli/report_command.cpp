@@ -38,8 +38,7 @@ Command addReportCommand(CLI::App& app) {
   sub->add_option("--images", options->images,
                   "The last run's --out folder: its rendered images and references (default: "
                   "snell-out)")
-      ->check(nonEmptyPath())
-      ->check(CLI::ExistingDirectory);
+      ->check(nonEmptyPath());
   sub->add_option("--shaders", options->shaders, "Folder of listings (titles, fail thresholds)")
       ->check(CLI::ExistingDirectory);
   sub->add_option("--sweep", options->sweep,
