@@ -67,8 +67,7 @@ std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& pat
   // one still there is a run that was killed.
   const std::string file = path.string();
   const std::string partial = kPartialSuffix;
-  const bool isPartial = file.size() > partial.size() &&
-                         file.compare(file.size() - partial.size(), partial.size(), partial) == 0;
+  const bool isPartial = file.size() > partial.size() && file.ends_with(partial);
   if (state.tornLine > 0) {
     // Only a run's FILE.partial can be torn: --resume finishes it into FILE.
     throw UsageError(fmt::format(

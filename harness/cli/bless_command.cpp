@@ -86,7 +86,7 @@ int bless(const SuiteOptions& options) {
     fmt::print(
         "\nsnell: interrupted by {} before every image case was rendered: nothing "
         "blessed, the goldens are as they were\n",
-        fmt::format("SIG{}", sigabbrev_np(suite.interruptedBy)));
+        signalName(suite.interruptedBy));
     return 130;
   }
   // A signal while goldens are written stops after the case being written,
@@ -102,7 +102,7 @@ int bless(const SuiteOptions& options) {
       fmt::print(
           "\nsnell: interrupted by {} while goldens were written: {} of {} results "
           "handled above, the others' goldens are as they were\n",
-          fmt::format("SIG{}", sigabbrev_np(interrupt.signal())), handled, suite.results.size());
+          signalName(interrupt.signal()), handled, suite.results.size());
       return 130;
     }
     ++handled;

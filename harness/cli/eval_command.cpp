@@ -127,7 +127,7 @@ int reportInterruption(const EvalSummary& summary, const std::string& input, int
           : fmt::format("the answers written are those of input lines 1 to {}, each whole",
                         summary.linesDone);
   fmt::print(stderr, "snell eval: interrupted by {}: {}; the rest begins at {}\n",
-             signal == SIGTERM ? "SIGTERM" : "SIGINT", written, rest);
+             signalName(signal), written, rest);
   return 128 + signal;
 }
 

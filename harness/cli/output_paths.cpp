@@ -58,8 +58,10 @@ void checkFile(const OutputPath& file) {
   // To root, access() says yes where no file can be made (/proc, a
   // read-only mount): one is made there and removed, as the file itself
   // will be written (beside it, then renamed).
+  // Named for the file, cut short so that a name near NAME_MAX still fits.
   const fs::path probe =
-      folder / fmt::format(".{}.probe-{}", fs::path(file.path).filename().string(), getpid());
+      folder /
+      fmt::format(".{}.probe-{}", fs::path(file.path).filename().string().substr(0, 64), getpid());
   const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   const int error = fd < 0 ? errno : 0;
   if (fd < 0 && error != EEXIST)

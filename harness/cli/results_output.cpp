@@ -13,6 +13,7 @@
 #include "report/junit.h"
 #include "report/phase_summary.h"
 #include "report/summary_table.h"
+#include "runner/interrupt_flag.h"
 
 namespace snell::cli {
 namespace {
@@ -41,8 +42,8 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   const BaselineReport report = judgeResults(expectations, results, skipped);
   const std::string incomplete =
       output.interruptedBy
-          ? fmt::format("interrupted by SIG{} after {} of {} results",
-                        sigabbrev_np(output.interruptedBy), results.size(), output.planned)
+          ? fmt::format("interrupted by {} after {} of {} results",
+                        signalName(output.interruptedBy), results.size(), output.planned)
           : output.incompleteBecause;
   if (!output.json.empty())
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".csv"),

@@ -127,6 +127,10 @@ Command addSweepCommand(CLI::App& app) {
     sweepOptions.builtins = !options->noBuiltins;
     sweepOptions.listings = options->listings;
     sweepOptions.shadersDir = options->shaders;
+    // Ctrl-C stops the drivers' children and the sweep at its next step
+    // (sweep_run.cpp), removing what it had written; a signal that comes
+    // once the results are being written lets them finish.
+    const InterruptFlag interrupt;
     // A driver that does not come up here stops the sweep before it starts.
     const std::vector<BackendProbe> probes =
         probeBackends(executable, sweepOptions.backends, driverArgs);
@@ -137,9 +141,6 @@ Command addSweepCommand(CLI::App& app) {
             probe.problem.find("snell devices") == std::string::npos ? " (`snell devices`)" : ""));
       sweepOptions.rules.push_back(precisionRulesForApi(probe.driver.api));
     }
-    // Ctrl-C stops the drivers' children and the sweep at its next step
-    // (sweep_run.cpp), removing what it had written.
-    const InterruptFlag interrupt;
     const fs::path made = firstMissingFolder(options->out);
     sweep::SweepResult result = [&] {
       try {
@@ -174,6 +175,10 @@ Command addSweepCommand(CLI::App& app) {
     fmt::print("wall time: {:.1f} s (sweep and classification {:.1f} s)\n",
                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                result.wallSeconds);
+    if (const int signal = interrupt.signal())
+      throw Interrupted(signal, fmt::format("{} came as the sweep's results were being written; "
+                                            "they were written whole",
+                                            signalName(signal)));
     bool implementation = false;
     for (const sweep::Break& b : result.breaks)
       implementation = implementation || b.cls == sweep::BreakClass::Implementation;

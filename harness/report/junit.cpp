@@ -41,19 +41,51 @@ JUnitNotes junitNotesOf(const BaselineReport& report) {
 
 namespace {
 
+// The length of the UTF-8 sequence at `text[at]` that XML 1.0 can carry
+// (a character other than U+FFFE and U+FFFF, well formed), or 0.
+std::size_t xmlCharacterLength(std::string_view text, std::size_t at) {
+  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+  const unsigned char lead = byte(0);
+  std::size_t length = 0;
+  char32_t code = 0;
+  if (lead < 0x80) return 1;
+  if (lead >= 0xC2 && lead <= 0xDF)
+    length = 2, code = lead & 0x1F;
+  else if (lead >= 0xE0 && lead <= 0xEF)
+    length = 3, code = lead & 0x0F;
+  else if (lead >= 0xF0 && lead <= 0xF4)
+    length = 4, code = lead & 0x07;
+  else
+    return 0;
+  if (at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(k) & 0xC0) != 0x80) return 0;
+    code = (code << 6) | (byte(k) & 0x3F);
+  }
+  const bool shortest = (length == 2 && code >= 0x80) || (length == 3 && code >= 0x800) ||
+                        (length == 4 && code >= 0x10000 && code <= 0x10FFFF);
+  const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+  return shortest && !surrogate && code != 0xFFFE && code != 0xFFFF ? length : 0;
+}
+
 // XML 1.0 has no way to write most control characters, not even as
-// character references (&#1; makes the file unreadable to every parser):
-// a driver's or worker's message that holds one (an ESC of a coloured log)
-// gets it spelled out as \xNN instead.
+// character references (&#1; makes the file unreadable to every parser),
+// nor a byte that is not UTF-8: a driver's or worker's message that holds
+// one (an ESC of a coloured log, a truncated multibyte character) gets it
+// spelled out as \xNN instead.
 std::string xmlSafe(std::string_view text) {
   std::string safe;
   safe.reserve(text.size());
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte < 0x20 && c != '\t' && c != '\n' && c != '\r')
-      safe += fmt::format("\\x{:02x}", byte);
-    else
-      safe += c;
+  for (std::size_t at = 0; at < text.size();) {
+    const auto c = static_cast<unsigned char>(text[at]);
+    const std::size_t length = xmlCharacterLength(text, at);
+    if (length == 0 || c == 0x7F || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')) {
+      safe += fmt::format("\\x{:02x}", c);
+      ++at;
+    } else {
+      safe.append(text.substr(at, length));
+      at += length;
+    }
   }
   return safe;
 }
@@ -64,8 +96,9 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
   pugi::xml_document doc;
   pugi::xml_node suites = doc.append_child("testsuites");
   suites.append_attribute("name") =
-      notes.incomplete.empty() ? "snell"
-                               : fmt::format("snell (incomplete: {})", notes.incomplete).c_str();
+      notes.incomplete.empty()
+          ? "snell"
+          : xmlSafe(fmt::format("snell (incomplete: {})", notes.incomplete)).c_str();
   std::map<std::string, pugi::xml_node> byBackend;
   for (const CaseResult& r : results) {
     pugi::xml_node& suite = byBackend[r.backend];
@@ -74,19 +107,19 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
       suite.append_attribute("name") = xmlSafe(r.backend).c_str();
     }
     pugi::xml_node test = suite.append_child("testcase");
-    test.append_attribute("classname") = fmt::format("snell.{}", r.backend).c_str();
+    test.append_attribute("classname") = xmlSafe(fmt::format("snell.{}", r.backend)).c_str();
     test.append_attribute("name") = xmlSafe(r.caseId).c_str();
     test.append_attribute("time") = r.seconds;
     const std::string key = r.backend + " " + r.caseId;
     if (const auto expected = notes.expectedFailures.find(key);
         expected != notes.expectedFailures.end()) {
       test.append_child("skipped").append_attribute("message") =
-          fmt::format("{}: {}", statusName(r.status), expected->second).c_str();
+          xmlSafe(fmt::format("{}: {}", statusName(r.status), expected->second)).c_str();
     } else if (const auto flake = notes.flakes.find(key); flake != notes.flakes.end()) {
       // Surefire's element for a test that failed, then passed on a rerun.
       pugi::xml_node flaky = test.append_child("flakyFailure");
       flaky.append_attribute("type") = statusName(r.status);
-      flaky.append_attribute("message") = flake->second.c_str();
+      flaky.append_attribute("message") = xmlSafe(flake->second).c_str();
       flaky.append_child(pugi::node_pcdata).set_value(xmlSafe(r.message).c_str());
     } else if (isFailure(r.status)) {
       pugi::xml_node failure = test.append_child(r.status == Status::Fail ? "failure" : "error");
@@ -124,7 +157,7 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
     if (!notes.incomplete.empty()) {
       pugi::xml_node property = suite.prepend_child("properties").append_child("property");
       property.append_attribute("name") = "incomplete";
-      property.append_attribute("value") = notes.incomplete.c_str();
+      property.append_attribute("value") = xmlSafe(notes.incomplete).c_str();
     }
   }
   std::ostringstream out;

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstring>
 
 namespace snell {
 namespace {
@@ -73,15 +74,9 @@ int InterruptFlag::signal() const { return received; }
 
 int interruptReceived() { return received; }
 
-const char* signalName(int signal) {
-  switch (signal) {
-    case SIGINT:
-      return "SIGINT";
-    case SIGTERM:
-      return "SIGTERM";
-    default:
-      return "a signal";
-  }
+std::string signalName(int signal) {
+  const char* abbreviation = sigabbrev_np(signal);
+  return abbreviation ? std::string("SIG") + abbreviation : "signal " + std::to_string(signal);
 }
 
 const volatile std::sig_atomic_t* InterruptFlag::flag() const { return &received; }

@@ -5,6 +5,7 @@
 // A second signal is the user's "now": the process says so on stderr and
 // exits at once with 128 + the signal, without finishing what it writes.
 #include <csignal>
+#include <string>
 
 namespace snell {
 
@@ -32,8 +33,8 @@ class InterruptFlag {
 // at its next step.
 int interruptReceived();
 
-// "SIGINT", "SIGTERM" or "signal N".
-const char* signalName(int signal);
+// "SIGINT", "SIGTERM", ...: a signal as messages name it.
+std::string signalName(int signal);
 
 // The line stderr gets on the second signal (for the tests).
 inline constexpr char kStoppedAtOnceMessage[] =

@@ -50,5 +50,15 @@ TEST(JUnit, ControlCharactersInMessagesAreSpelledOutNotWritten) {
   EXPECT_NE(xml.find("reason\\x02"), std::string::npos) << xml;
 }
 
+// A byte that is not UTF-8 (a multibyte character cut short in a driver's
+// log) makes the file unreadable to XML parsers as well: spelled out, while
+// well-formed UTF-8 is kept.
+TEST(JUnit, BytesThatAreNotUtf8AreSpelledOutAndUtf8IsKept) {
+  const std::string xml = toJUnitXml(
+      {result("a/crash", Status::Crash, "cut \xC3 here, \xFF, caf\xC3\xA9 \xE2\x82\xAC ok")});
+  EXPECT_NE(xml.find("cut \\xc3 here, \\xff, caf\xC3\xA9 \xE2\x82\xAC ok"), std::string::npos)
+      << xml;
+}
+
 }  // namespace
 }  // namespace snell
