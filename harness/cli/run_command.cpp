@@ -21,8 +21,16 @@ Command addRunCommand(CLI::App& app) {
                   "Times an unexpected failure is run again; one that passes is a Flake")
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
+  // Given empty (unset CI variables), every job would run the whole suite.
   sub->add_option("--shard", options->shard,
-                  "Run shard I of N (1-based, interleaved): --shard $CI_NODE_INDEX/$CI_NODE_TOTAL");
+                  "Run shard I of N (1-based, interleaved): --shard $CI_NODE_INDEX/$CI_NODE_TOTAL")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            return text.empty() || text == "/"
+                       ? "empty (are the CI variables unset?); give I/N, or leave the option out"
+                       : "";
+          },
+          ""));
   sub->add_option("--resume", options->resume,
                   "Results file (or FILE.partial) of an interrupted run: its finished cases are "
                   "kept, the others run")

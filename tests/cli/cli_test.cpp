@@ -258,6 +258,8 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            // bench: each backend once, sizes increasing (the error is taken
            // at the last, which the charts call the largest).
            {"init /dev/null", "/dev/null: a file, not a folder"},
+           {"run --shard '' --filter 'no-such/*'", "--shard: empty (are the CI variables unset?)"},
+           {"run --shard / --filter 'no-such/*'", "--shard: empty"},
            {"bench --backends vk,vk", "`vk` is named twice"},
            {"bench --resolutions 64,32", "--resolutions 64,32: give them in increasing order"},
            {"bench --resolutions 32,32", "--resolutions 32,32: give them in increasing order"}}) {
