@@ -7,6 +7,8 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
+#include <system_error>
 
 #include "report/gnuplot_batch.h"
 #include "report/sweep_findings.h"
@@ -182,9 +184,33 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
   }
 }
 
+// The charts of an earlier sweep in the same folder that this one did not
+// draw (another backend's map, a listing no longer swept) would stand
+// beside its results and contradict them: the sweep's charts are named
+// sweep-*.svg and .png, and those it did not draw now are removed.
+void removeEarlierCharts(const fs::path& outDir, const std::vector<fs::path>& written) {
+  std::set<fs::path> drawn;
+  for (const fs::path& path : written) drawn.insert(path.filename());
+  std::error_code error;
+  std::vector<fs::path> stale;
+  for (const fs::directory_entry& entry : fs::directory_iterator(outDir, error)) {
+    const fs::path& path = entry.path();
+    const std::string name = path.filename().string();
+    const bool chart =
+        name.starts_with("sweep-") && (path.extension() == ".svg" || path.extension() == ".png");
+    if (chart && entry.is_regular_file(error) && !drawn.count(path.filename()))
+      stale.push_back(path);
+  }
+  for (const fs::path& path : stale) fs::remove(path, error);
+}
+
 }  // namespace
 
 std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
+  // sweep-data/ is the charts' own, written whole each time: an earlier
+  // sweep's data (another backend's) goes with it.
+  std::error_code ignored;
+  fs::remove_all(outDir / "sweep-data", ignored);
   ChartData data(outDir);
   double reflectWorst = 0;
   for (const BackendSweep& sweep : result.sweeps) {
@@ -264,6 +290,7 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
            withCriticalAngle(data.curves("map/method/", "with points")));
   if (result.listingsSwept) addListingMaps(batch, written, outDir, result.listings, mapAxes);
   batch.run();
+  removeEarlierCharts(outDir, written);
   return written;
 }
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <set>
@@ -225,6 +226,36 @@ TEST(SweepCli, EveryPointOutOfTimeNamesTheLimit) {
   EXPECT_NE(o.out.find("every point on vk ran out of time: is --timeout 0.001 s too short"),
             std::string::npos)
       << o.out;
+  fs::remove_all(out);
+}
+
+// A sweep into the folder of an earlier one left that one's charts and
+// data of another backend beside its own results, contradicting them: the
+// sweep's own charts (sweep-*.svg, .png) it did not draw, and its data
+// folder, are replaced; other files are not touched.
+TEST(SweepCli, AnEarlierSweepsChartsDoNotStayBesideANewOnesResults) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-re-{}", ::getpid());
+  fs::remove_all(out);
+  const auto sweep = [&](const char* backends) {
+    return runSnell(
+        fmt::format("sweep --backend {} --quick --listings 'orange-book/14.1-fresnel' "
+                    "--out {}",
+                    backends, out.string()));
+  };
+  const Outcome both = sweep("gl,vk");
+  ASSERT_TRUE(both.code == 0 || both.code == 1) << both.out;
+  const fs::path glMap = out / "sweep-map-listing-orange-book-14.1-fresnel-gl.png";
+  ASSERT_TRUE(fs::exists(glMap));
+  std::ofstream(out / "sweep-notes.txt") << "mine";
+  std::ofstream(out / "mine.png") << "mine";
+  const Outcome vkOnly = sweep("vk");
+  ASSERT_TRUE(vkOnly.code == 0 || vkOnly.code == 1) << vkOnly.out;
+  EXPECT_FALSE(fs::exists(glMap));
+  EXPECT_TRUE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
+  for (const auto& entry : fs::directory_iterator(out / "sweep-data"))
+    EXPECT_EQ(entry.path().filename().string().find("-gl-"), std::string::npos) << entry.path();
+  EXPECT_TRUE(fs::exists(out / "sweep-notes.txt"));
+  EXPECT_TRUE(fs::exists(out / "mine.png"));
   fs::remove_all(out);
 }
 
