@@ -179,20 +179,22 @@ BenchResults runBench(const BenchOptions& options,
       record.error = imageError(lastImage, reference.color, reference.covered);
       record.errorWidth = errorSize;
       record.errorByAngle = errorByAngle(lastImage, reference);
-      if (!options.imagesDir.empty()) {
-        std::string stem = m.id;
-        std::replace(stem.begin(), stem.end(), '/', '_');
-        writeImageAtomically(options.imagesDir / fmt::format("{}.{}.exr", stem, record.backend),
-                             lastImage);
-      }
+      if (!options.imagesDir.empty())
+        writeImageAtomically(options.imagesDir / benchImageName(m.id, record.backend), lastImage);
       progress(fmt::format("{} on {}: {:.3f} ms per frame at {}px, CIEDE2000 mean {:.3f}", m.id,
                            record.backend, record.msPerFrame(), errorSize, record.error.deMean));
       results.records.push_back(std::move(record));
     }
   }
   if (!options.imagesDir.empty())
-    writeImageAtomically(options.imagesDir / "physics_reference.exr", references.first().color);
+    writeImageAtomically(options.imagesDir / kReferenceImageName, references.first().color);
   return results;
+}
+
+std::string benchImageName(const std::string& method, const std::string& backend) {
+  std::string stem = method;
+  std::replace(stem.begin(), stem.end(), '/', '_');
+  return fmt::format("{}.{}.exr", stem, backend);
 }
 
 }  // namespace snell::bench

@@ -33,6 +33,11 @@ struct BenchOptions {
   std::filesystem::path imagesDir;
 };
 
+// The files a run writes into BenchOptions::imagesDir: each method's image
+// on each backend, and the physics reference's.
+std::string benchImageName(const std::string& method, const std::string& backend);
+inline constexpr const char* kReferenceImageName = "physics_reference.exr";
+
 // Runs the measurement; `progress` gets one line per method and backend.
 // Throws UsageError for bad options or a listing that does not compile.
 BenchResults runBench(const BenchOptions& options,

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <set>
 #include <system_error>
 
 #include "bench/ablation.h"
@@ -36,6 +37,30 @@ bool isLadder(const std::filesystem::path& dir) {
   return false;
 }
 
+// A ladder's folder is the bench's own: an earlier run's charts, their data
+// and its images of methods or backends this run did not measure would
+// stand beside the new bench.json and contradict it. Once the new results
+// are written, the chart data (*.dat, written whole by each chart), the
+// charts this run may not draw again, and the images it did not write go.
+void removeEarlierOutputs(const bench::BenchResults& results, const std::filesystem::path& out) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  std::vector<fs::path> stale;
+  for (const fs::directory_entry& entry : fs::directory_iterator(out, error))
+    if (entry.path().extension() == ".dat" && entry.is_regular_file(error))
+      stale.push_back(entry.path());
+  for (const char* chart : {"vertices", "wavelengths"})
+    for (const char* extension : {".svg", ".png"})
+      stale.push_back(out / (std::string(chart) + extension));
+  std::set<std::string> images = {bench::kReferenceImageName};
+  for (const bench::BenchRecord& r : results.records)
+    images.insert(bench::benchImageName(r.method, r.backend));
+  for (const fs::directory_entry& entry : fs::directory_iterator(out / "images", error))
+    if (entry.path().extension() == ".exr" && !images.count(entry.path().filename().string()))
+      stale.push_back(entry.path());
+  for (const fs::path& path : stale) fs::remove(path, error);
+}
+
 // Measures one ladder into `out`: bench.json, its table, its charts; returns
 // the line naming what it wrote.
 std::string measureLadder(bench::BenchOptions run, const std::filesystem::path& out,
@@ -46,6 +71,7 @@ std::string measureLadder(bench::BenchOptions run, const std::filesystem::path& 
       bench::runBench(run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
   bench::writeBenchResults(results, out / "bench.json");
   fmt::print("{}", bench::benchTable(results, metric));
+  removeEarlierOutputs(results, out);
   bench::drawParetoChart(results, metric, out);
   bench::drawAngleChart(results, metric, out);
   std::string charts =

@@ -140,4 +140,31 @@ TEST(LadderBenchCli, AMethodThatDoesNotCompileStopsTheBenchBeforeAnyTiming) {
   fs::remove_all(dir);
 }
 
+// A bench into the folder of an earlier one left that one's gl images,
+// chart data and vertex chart beside a bench.json of vk alone: they are
+// replaced, and files the bench never writes are left.
+TEST(LadderBenchCli, AnEarlierBenchsOutputsDoNotStayBesideANewOnesResults) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell_bench_again.{}", getpid());
+  fs::remove_all(out);
+  const auto bench = [&](const char* backends, const char* tessellations) {
+    return runSnell(
+        fmt::format("bench --methods {}/shaders/methods/fresnel --backends {} --resolutions 16 "
+                    "--tessellations {} --repeats 1 --warmup 0 --no-ablation --out {}",
+                    SNELL_SOURCE_ROOT, backends, tessellations, out.string()));
+  };
+  ASSERT_EQ(bench("gl,vk", "6,12").code, 0);
+  ASSERT_TRUE(fs::exists(out / "vertices.png"));
+  ASSERT_TRUE(fs::exists(out / "front_gl.dat"));
+  std::ofstream(out / "notes.txt") << "mine";
+  ASSERT_EQ(bench("vk", "6").code, 0);
+  EXPECT_FALSE(fs::exists(out / "vertices.png")) << "one tessellation draws no vertex chart";
+  EXPECT_FALSE(fs::exists(out / "front_gl.dat"));
+  EXPECT_TRUE(fs::exists(out / "front_vk.dat"));
+  for (const auto& entry : fs::directory_iterator(out / "images"))
+    EXPECT_EQ(entry.path().filename().string().find(".gl."), std::string::npos) << entry.path();
+  EXPECT_TRUE(fs::exists(out / "images" / "physics_reference.exr"));
+  EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  fs::remove_all(out);
+}
+
 }  // namespace snell::testing
