@@ -1,10 +1,24 @@
 #include "runner/case_result_json.h"
 
+#include "core/errors.h"
 #include "runner/checks/check_kind.h"
 #include "runner/json_fields.h"
 
 namespace snell {
 namespace {
+
+// The record's field `key` as T: a field that is missing or of another
+// type names itself (the JSON library's message alone, "type must be
+// number, but is string", left the reader to guess which).
+template <class T>
+T field(const nlohmann::json& j, const char* key) {
+  try {
+    return j.at(key).get<T>();
+  } catch (const nlohmann::json::exception& error) {
+    throw nlohmann::json::other_error::create(
+        501, std::string("\"") + key + "\": " + readableError(error), &j);
+  }
+}
 
 Status statusOf(const std::string& name) {
   if (const std::optional<Status> status = statusFromName(name)) return *status;
@@ -61,29 +75,33 @@ nlohmann::json toJson(const CaseResult& r) {
 }
 
 CaseResult caseResultFromJson(const nlohmann::json& j) {
+  if (!j.is_object())
+    throw nlohmann::json::type_error::create(
+        302, std::string("a record is an object, not ") + j.type_name(), &j);
   CaseResult r;
-  r.caseId = j.at("case").get<std::string>();
-  r.backend = j.at("backend").get<std::string>();
-  r.status = statusOf(j.at("status").get<std::string>());
-  r.message = j.at("message").get<std::string>();
-  r.title = j.at("title").get<std::string>();
-  r.sourceFile = j.at("source").at("file").get<std::string>();
-  r.sourceWhere = j.at("source").at("where").get<std::string>();
-  const nlohmann::json& d = j.at("driver");
-  r.driver = {d.at("api").get<std::string>(), d.at("api_version").get<std::string>(),
-              d.at("renderer").get<std::string>(), d.at("driver_version").get<std::string>(),
-              d.at("device_type").get<std::string>()};
-  r.vertices = jsonCount<std::size_t>(j.at("vertices"));
+  r.caseId = field<std::string>(j, "case");
+  r.backend = field<std::string>(j, "backend");
+  r.status = statusOf(field<std::string>(j, "status"));
+  r.message = field<std::string>(j, "message");
+  r.title = field<std::string>(j, "title");
+  const auto source = field<nlohmann::json>(j, "source");
+  r.sourceFile = field<std::string>(source, "file");
+  r.sourceWhere = field<std::string>(source, "where");
+  const auto d = field<nlohmann::json>(j, "driver");
+  r.driver = {field<std::string>(d, "api"), field<std::string>(d, "api_version"),
+              field<std::string>(d, "renderer"), field<std::string>(d, "driver_version"),
+              field<std::string>(d, "device_type")};
+  r.vertices = jsonCount<std::size_t>(field<nlohmann::json>(j, "vertices"));
   for (const auto& kind : checkKinds()) kind->readJson(j, r);
-  r.compileLog = j.at("compile_log").get<std::string>();
-  r.seconds = j.at("seconds").get<double>();
-  r.backendSeconds = j.at("backend_seconds").get<double>();
-  r.oracleSeconds = j.at("oracle_seconds").get<double>();
+  r.compileLog = field<std::string>(j, "compile_log");
+  r.seconds = field<double>(j, "seconds");
+  r.backendSeconds = field<double>(j, "backend_seconds");
+  r.oracleSeconds = field<double>(j, "oracle_seconds");
   r.phases = phasesFromJson(j);
   // Absent from records written before results were stored.
   if (j.contains("oracle_results")) r.oracleResults = jsonCount<int>(j.at("oracle_results"));
   if (j.contains("oracle_stored")) r.oracleStored = jsonCount<int>(j.at("oracle_stored"));
-  if (j.contains("shard")) r.shard = j.at("shard").get<std::string>();
+  if (j.contains("shard")) r.shard = field<std::string>(j, "shard");
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

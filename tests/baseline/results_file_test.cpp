@@ -47,8 +47,28 @@ TEST(ResultsFile, MalformedRecordIsUsageErrorAtItsLine) {
     FAIL() << "accepted a malformed record";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("r.jsonl:2:"), std::string::npos) << e.what();
+    // The field is named, not only the JSON library's complaint about it.
+    EXPECT_NE(std::string(e.what()).find("\"case\": type must be string"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW(readResultsFile(dir.path() / "missing.jsonl"), UsageError);
+  std::string noRenderer = good;
+  noRenderer.replace(noRenderer.find("\"renderer\""), 10, "\"rendered\"");
+  try {
+    readResultsFile(dir.write("n.jsonl", noRenderer));
+    FAIL() << "accepted a record with no renderer";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"renderer\": key 'renderer' not found"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    readResultsFile(dir.write("a.jsonl", "[1, 2]\n"));
+    FAIL() << "accepted an array";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("a record is an object, not array"), std::string::npos)
+        << e.what();
+  }
 }
 
 // Two records of one case on one backend (two files concatenated, a record
