@@ -8,7 +8,9 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/case_result_json.h"
+#include "runner/json_fields.h"
 
 namespace snell {
 
@@ -88,16 +90,16 @@ std::vector<CaseResult> readFinishedResultsFile(const std::filesystem::path& pat
                     "`snell run --json`",
                     path.string()));
   if (isPartial)
-    fmt::print(stderr,
-               "snell: note: {} is the results of a run that was killed: the cases it did not "
-               "reach are missing from it (finish it with `snell run --resume {} --json {}` and "
-               "the run's own options)\n",
-               file, file, file.substr(0, file.size() - partial.size()));
+    printMessage(stderr,
+                 "snell: note: {} is the results of a run that was killed: the cases it did not "
+                 "reach are missing from it (finish it with `snell run --resume {} --json {}` and "
+                 "the run's own options)\n",
+                 file, file, file.substr(0, file.size() - partial.size()));
   else if (state.incomplete)
-    fmt::print(stderr,
-               "snell: note: {} is an interrupted run (its records are marked incomplete): the "
-               "cases it did not reach are missing from it\n",
-               path.string());
+    printMessage(stderr,
+                 "snell: note: {} is an interrupted run (its records are marked incomplete): the "
+                 "cases it did not reach are missing from it\n",
+                 path.string());
   if (incomplete) *incomplete = state.incomplete || isPartial;
   return results;
 }
@@ -107,7 +109,7 @@ std::string toResultsJsonLines(const std::vector<CaseResult>& results, bool inco
   for (const CaseResult& r : results) {
     nlohmann::json j = toJson(r);
     if (incomplete) j["incomplete"] = true;
-    text += j.dump() + "\n";
+    text += jsonText(j) + "\n";
   }
   return text;
 }

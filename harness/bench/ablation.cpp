@@ -9,6 +9,7 @@
 #include "bench/ladder_checks.h"
 #include "bench/sphere_trace_image.h"
 #include "core/atomic_file.h"
+#include "runner/json_fields.h"
 
 namespace snell::bench {
 namespace {
@@ -82,7 +83,7 @@ void writeAblationJson(const AblationTable& table, const std::filesystem::path& 
                            {"noise", {{"rms", errorNoise("rms")}, {"de", errorNoise("de_mean")}}},
                            {"geometric", rowsJson(table.geometric)},
                            {"spectral", rowsJson(table.spectral)}};
-  writeFileAtomically(path, doc.dump(2) + "\n");
+  writeFileAtomically(path, jsonText(doc, 2) + "\n");
 }
 
 }  // namespace snell::bench

@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "runner/json_fields.h"
 
 namespace snell::bench {
 namespace {
@@ -135,7 +136,7 @@ void writeBenchResults(const BenchResults& results, const std::filesystem::path&
   json records = json::array();
   for (const BenchRecord& r : results.records) records.push_back(toJson(r));
   const json doc{{"scene", results.scene}, {"reference", results.reference}, {"records", records}};
-  writeFileAtomically(path, doc.dump(2) + "\n");
+  writeFileAtomically(path, jsonText(doc, 2) + "\n");
 }
 
 BenchResults readBenchResults(const std::filesystem::path& path) {

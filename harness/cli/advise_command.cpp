@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "core/errors.h"
+#include "runner/json_fields.h"
 
 namespace snell::cli {
 namespace {
@@ -107,7 +108,7 @@ Command addAdviseCommand(CLI::App& app) {
                    recordText(*a.mostAccurate, options->metric, options->budget));
       }
     }
-    if (options->json) fmt::print("{}\n", doc.dump(2));
+    if (options->json) fmt::print("{}\n", jsonText(doc, 2));
     return allMet ? 0 : 1;
   };
 }

@@ -21,6 +21,7 @@
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/interrupt_flag.h"
 
 namespace snell::cli {
@@ -68,7 +69,7 @@ std::string measureLadder(bench::BenchOptions run, const std::filesystem::path& 
   std::filesystem::create_directories(out / "images");
   run.imagesDir = out / "images";
   const bench::BenchResults results =
-      bench::runBench(run, [](const std::string& line) { fmt::print(stderr, "{}\n", line); });
+      bench::runBench(run, [](const std::string& line) { printMessage(stderr, "{}\n", line); });
   bench::writeBenchResults(results, out / "bench.json");
   fmt::print("{}", bench::benchTable(results, metric));
   removeEarlierOutputs(results, out);

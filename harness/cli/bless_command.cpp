@@ -23,6 +23,7 @@
 #include "golden/golden_store.h"
 #include "runner/image_check.h"
 #include "runner/interrupt_flag.h"
+#include "runner/json_fields.h"
 
 namespace snell::cli {
 namespace {
@@ -78,7 +79,7 @@ int bless(const SuiteOptions& options) {
                     fs::exists(options.golden) ? "not a folder" : "no such golden folder"));
   std::vector<OutputPath> files;
   if (!options.json.empty()) files = resultsFileOutputs("--json", options.json);
-  checkOutputs(files, {{"--out", options.out}});
+  checkOutputs(files, {{"--out", options.out}}, {{"--golden", options.golden}});
   const SuiteRun suite = runSuite(options, true, false);
   // A bless cut short blesses nothing: a partial set of new goldens beside
   // old ones, with exit 0, would be committed as if it were whole.
@@ -139,7 +140,7 @@ int bless(const SuiteOptions& options) {
         rewritten.push_back("the lost preview written again");
       }
       if (!change.sameMetadata) {
-        writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+        writeFileAtomically(files.metadata, jsonText(metadata, 2) + "\n");
         rewritten.push_back("metadata rewritten (driver or tolerance)");
       }
       if (!rewritten.empty())

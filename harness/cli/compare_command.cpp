@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "core/errors.h"
+#include "runner/json_fields.h"
 
 namespace snell::cli {
 namespace {
@@ -83,7 +84,7 @@ Command addCompareCommand(CLI::App& app) {
       else
         printComparison(std::cout, c, rule);
     }
-    if (options->json) std::cout << all.dump(2) << "\n";
+    if (options->json) std::cout << jsonText(all, 2) << "\n";
     return regressed ? 1 : 0;
   };
 }

@@ -22,6 +22,7 @@
 #include "cli/option_checks.h"
 #include "cli/shell_word.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/builtin_eval.h"
 #include "runner/eval_client.h"
 #include "runner/eval_server_protocol.h"
@@ -38,7 +39,7 @@ class TerminalProgress {
  public:
   TerminalProgress() : on_(isatty(STDERR_FILENO)), start_(Clock::now()) {}
   ~TerminalProgress() {
-    if (shown_) fmt::print(stderr, "\n");
+    if (shown_) printMessage(stderr, "\n");
   }
   TerminalProgress(const TerminalProgress&) = delete;
   TerminalProgress& operator=(const TerminalProgress&) = delete;
@@ -48,7 +49,7 @@ class TerminalProgress {
     if (!on_ || now - start_ < std::chrono::seconds(2) || now - shownAt_ < std::chrono::seconds(1))
       return;
     const double seconds = std::chrono::duration<double>(now - start_).count();
-    fmt::print(stderr, "\rsnell eval: {} lines, {:.0f} lines/s ", lines, lines / seconds);
+    printMessage(stderr, "\rsnell eval: {} lines, {:.0f} lines/s ", lines, lines / seconds);
     std::fflush(stderr);
     shown_ = true;
     shownAt_ = now;
@@ -126,8 +127,8 @@ int reportInterruption(const EvalSummary& summary, const std::string& input, int
           ? "no line was answered"
           : fmt::format("the answers written are those of input lines 1 to {}, each whole",
                         summary.linesDone);
-  fmt::print(stderr, "snell eval: interrupted by {}: {}; the rest begins at {}\n",
-             signalName(signal), written, rest);
+  printMessage(stderr, "snell eval: interrupted by {}: {}; the rest begins at {}\n",
+               signalName(signal), written, rest);
   return 128 + signal;
 }
 
@@ -135,10 +136,10 @@ int reportInterruption(const EvalSummary& summary, const std::string& input, int
 int reportSummary(const EvalSummary& summary, const std::string& input) {
   if (summary.malformed) {
     const std::string where = input == "-" ? "standard input" : input;
-    fmt::print(stderr, "snell eval: {}:{}: {}\n", input == "-" ? "<stdin>" : where,
-               summary.firstMalformedLine, summary.firstMalformedReason);
-    fmt::print(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
-               summary.malformed, where);
+    printMessage(stderr, "snell eval: {}:{}: {}\n", input == "-" ? "<stdin>" : where,
+                 summary.firstMalformedLine, summary.firstMalformedReason);
+    printMessage(stderr, "snell eval: {} malformed line(s) in {}; see their \"error\" answers\n",
+                 summary.malformed, where);
     return 2;
   }
   return summary.outsideSpec ? 1 : 0;
@@ -230,6 +231,13 @@ others are still answered), or input, options or a driver that cannot be used.)"
             "use --backend oracle --rules {}",
             options->rules, options->backend, own, options->rules));
     }
+    // With standard output closed the next file opened takes its number: a
+    // server's socket then received the client's own answers, and the two
+    // waited on each other.
+    if (::fcntl(STDOUT_FILENO, F_GETFD) == -1)
+      throw UsageError(
+          "standard output is closed: the answers would have nowhere to go; give eval a "
+          "file or a pipe to write to");
     if (options->server) return askServer(*options);
     // Options that would be passed over without a word are refused (a
     // server refuses both: its driver is already up).

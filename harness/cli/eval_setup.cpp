@@ -8,6 +8,7 @@
 
 #include "backends/backend_registry.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/block_pool.h"
 #include "runner/oracle_store/oracle_store.h"
 
@@ -39,7 +40,7 @@ std::unique_ptr<Backend> makeEvalBackend(const std::string& backend, const std::
   if (backendRegistry().find(backend).family == "vk") {
     const OracleStoreFolder folder = prepareOracleStoreDir(
         defaultOracleStoreDir(), "Set SNELL_ORACLE_CACHE to a folder, or to off to say so");
-    if (!folder.note.empty()) fmt::print(stderr, "snell: {}\n", folder.note);
+    if (!folder.note.empty()) printMessage(stderr, "snell: {}\n", folder.note);
     options.cacheDir = folder.dir.string();
   }
   return makeBackend(backend, options);

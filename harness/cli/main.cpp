@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "core/errors.h"
 #include "core/heap_reuse.h"
+#include "core/message.h"
 
 int main(int argc, char** argv) {
   snell::keepFreedMemoryForReuse();
@@ -43,8 +44,9 @@ int main(int argc, char** argv) {
       std::string names;
       for (const CLI::App* sub : app.get_subcommands({}))
         if (!sub->get_group().empty()) names += (names.empty() ? "" : ", ") + sub->get_name();
-      fmt::print(stderr, "snell: unknown command '{}'; the commands are {} (snell --help)\n",
-                 app.remaining().front(), names);
+      snell::printMessage(stderr,
+                          "snell: unknown command '{}'; the commands are {} (snell --help)\n",
+                          app.remaining().front(), names);
       return 2;
     }
     app.exit(error);
@@ -52,7 +54,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (drivers && !version) {
-      fmt::print(stderr, "snell: --drivers goes with --version: snell --version --drivers\n");
+      snell::printMessage(stderr,
+                          "snell: --drivers goes with --version: snell --version --drivers\n");
       return 2;
     }
     if (version) {
@@ -60,22 +63,22 @@ int main(int argc, char** argv) {
       return drivers ? snell::cli::printBackendDrivers({}) : 0;
     }
     if (app.get_subcommands().empty()) {
-      fmt::print(stderr, "snell: name a command (snell --help lists them)\n");
+      snell::printMessage(stderr, "snell: name a command (snell --help lists them)\n");
       return 2;
     }
     for (const auto& [sub, run] : commands)
       if (sub->parsed()) return run();
   } catch (const snell::Interrupted& stopped) {
-    fmt::print(stderr, "snell: {}\n", stopped.what());
+    snell::printMessage(stderr, "snell: {}\n", stopped.what());
     return 128 + stopped.signal;
   } catch (const snell::UsageError& error) {
-    fmt::print(stderr, "snell: {}\n", error.what());
+    snell::printMessage(stderr, "snell: {}\n", error.what());
     return 2;
   } catch (const snell::SetupError& error) {
-    fmt::print(stderr, "snell: set-up error: {}\n", error.what());
+    snell::printMessage(stderr, "snell: set-up error: {}\n", error.what());
     return 2;
   } catch (const std::exception& error) {
-    fmt::print(stderr, "snell: internal error: {}\n", error.what());
+    snell::printMessage(stderr, "snell: internal error: {}\n", error.what());
     return 2;
   }
   return 2;

@@ -138,6 +138,12 @@ void checkFolder(const OutputPath& folder) {
   }
 }
 
+// The same for a folder named with or without a trailing slash.
+fs::path folderIdentity(const fs::path& path) {
+  const fs::path id = identity(path);
+  return id.has_filename() ? id : id.parent_path();
+}
+
 std::string named(const OutputPath& output, const fs::path& id) {
   return output.path == id ? output.path.string()
                            : fmt::format("{} (that is {})", output.path.string(), id.string());
@@ -164,6 +170,17 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
                   const std::vector<OutputPath>& inputs) {
   for (const OutputPath& file : files) checkFile(file);
   for (const OutputPath& folder : folders) checkFolder(folder);
+  // An output folder that is an input one (run --out the --golden folder)
+  // would have its images written over what they are compared with.
+  for (const OutputPath& folder : folders) {
+    const fs::path id = folderIdentity(folder.path);
+    for (const OutputPath& input : inputs)
+      if (folderIdentity(input.path) == id)
+        throw UsageError(fmt::format(
+            "{} {} is also {}: the command would write its images over the ones it reads "
+            "there; name another folder",
+            folder.option, named(folder, id), input.option));
+  }
   for (std::size_t i = 0; i < files.size(); ++i) {
     const fs::path id = identity(files[i].path);
     for (std::size_t j = i + 1; j < files.size(); ++j)

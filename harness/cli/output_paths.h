@@ -25,7 +25,7 @@ std::vector<OutputPath> resultsFileOutputs(const std::string& option,
 // - a file is a folder, or its folder does not exist or is not writable;
 // - a folder exists as something other than a folder;
 // - two outputs, a file and a folder, or an output and an input, are the
-//   same path.
+//   same path (an input may be a folder: run's --golden).
 void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
                   const std::vector<OutputPath>& inputs = {});
 

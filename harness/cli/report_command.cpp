@@ -13,6 +13,7 @@
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "report/html_report.h"
 
 namespace snell::cli {
@@ -85,10 +86,10 @@ Command addReportCommand(CLI::App& app) {
                          [](const CaseResult& r) { return !r.images.empty(); });
     });
     if (imageCases && stats.heatMaps == 0 && stats.pictures == 0)
-      fmt::print(stderr,
-                 "snell: note: {} holds none of these runs' images, so the report shows no "
-                 "picture or heat map; pass --images the run's --out folder\n",
-                 options->images);
+      printMessage(stderr,
+                   "snell: note: {} holds none of these runs' images, so the report shows no "
+                   "picture or heat map; pass --images the run's --out folder\n",
+                   options->images);
     fmt::print(
         "{}/index.html: {} cases, {} histograms, {} heat maps, {} pictures, {:.1f} MB, "
         "{:.2f} s\n",

@@ -14,6 +14,7 @@
 #include "report/phase_summary.h"
 #include "report/summary_table.h"
 #include "runner/interrupt_flag.h"
+#include "runner/json_fields.h"
 
 namespace snell::cli {
 namespace {
@@ -53,7 +54,7 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
   timing.oracleStore = output.oracleStore;
   if (!output.json.empty() && output.wallSeconds > 0)
     writeFileAtomically(std::filesystem::path(output.json).replace_extension(".timing.json"),
-                        runTimingJson(timing).dump(2) + "\n");
+                        jsonText(runTimingJson(timing), 2) + "\n");
   if (!output.junit.empty()) {
     JUnitNotes notes = junitNotesOf(report);
     notes.incomplete = incomplete;

@@ -40,7 +40,7 @@ Command addRunCommand(CLI::App& app) {
     std::vector<OutputPath> files;
     if (!options->json.empty()) files = resultsFileOutputs("--json", options->json);
     if (!junit->empty()) files.push_back({"--junit", *junit});
-    checkOutputs(files, {{"--out", options->out}});
+    checkOutputs(files, {{"--out", options->out}}, {{"--golden", options->golden}});
     const SuiteRun suite = runSuite(*options, false, true);
     return reportResults(
         suite.results, suite.expectations, suite.skipped,

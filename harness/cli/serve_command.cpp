@@ -7,6 +7,7 @@
 #include "cli/eval_setup.h"
 #include "cli/option_checks.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/eval_server.h"
 #include "runner/eval_server_protocol.h"
 #include "runner/interrupt_flag.h"
@@ -67,15 +68,17 @@ Only its own user's `snell eval --server` of the same build is answered.)");
     serveOptions.eval = evalOptionsFromEnvironment();
     EvalServer server(*backend, options->backend, serveOptions, interrupt);
     if (interrupt.signal()) {
-      fmt::print(stderr, "snell serve: stopped by signal {} while starting\n", interrupt.signal());
+      printMessage(stderr, "snell serve: stopped by signal {} while starting\n",
+                   interrupt.signal());
       return 0;
     }
     const DriverInfo& driver = backend->driverInfo();
-    fmt::print(stderr, "snell serve: {} ({}) on {}, watching {} files; pid {}\n", options->backend,
-               driver.renderer, serveOptions.socketPath, server.watchedFiles(), getpid());
+    printMessage(stderr, "snell serve: {} ({}) on {}, watching {} files; pid {}\n",
+                 options->backend, driver.renderer, serveOptions.socketPath, server.watchedFiles(),
+                 getpid());
     std::fflush(stderr);
     const std::string why = server.run(stderr);
-    fmt::print(stderr, "snell serve: stopped: {}\n", why);
+    printMessage(stderr, "snell serve: stopped: {}\n", why);
     return 0;
   };
 }

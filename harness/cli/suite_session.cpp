@@ -28,6 +28,7 @@
 #include "compare/image_library.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "core/scene_file.h"
 #include "runner/backend_probe.h"
 #include "runner/case_result_json.h"
@@ -36,6 +37,7 @@
 #include "runner/cross_api_check.h"
 #include "runner/fragment_vector_check.h"
 #include "runner/interrupt_flag.h"
+#include "runner/json_fields.h"
 #include "runner/open_file_budget.h"
 #include "runner/oracle_store/oracle_store.h"
 #include "runner/supervisor.h"
@@ -81,7 +83,7 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options,
     if (!all)
       throw SetupError(
           fmt::format("backend {} cannot be brought up: {}", probe.backend, probe.problem));
-    fmt::print(stderr, "snell: skipping {}: {}\n", probe.backend, probe.problem);
+    printMessage(stderr, "snell: skipping {}: {}\n", probe.backend, probe.problem);
   }
   if (up.empty()) throw SetupError("no backend comes up on this machine (`snell devices`)");
   return up;
@@ -111,8 +113,8 @@ int workersForRun(int asked) {
         fmt::format("-j {}: {}, and each worker keeps {} open; use -j {} or less, or "
                     "raise the limit",
                     asked, limits, kDescriptorsPerWorker, fit.workers));
-  fmt::print(stderr, "snell: {} worker{}, not one per core ({}): {}\n", fit.workers,
-             fit.workers == 1 ? "" : "s", wanted, limits);
+  printMessage(stderr, "snell: {} worker{}, not one per core ({}): {}\n", fit.workers,
+               fit.workers == 1 ? "" : "s", wanted, limits);
   return fit.workers;
 }
 
@@ -124,7 +126,7 @@ std::string oracleStoreFor(const SuiteOptions& options) {
   const OracleStoreFolder folder = prepareOracleStoreDir(
       options.oracleCache.empty() ? defaultOracleStoreDir() : fs::path(options.oracleCache),
       "Pass --oracle-cache DIR, or --oracle-cache off to say so");
-  if (!folder.note.empty()) fmt::print(stderr, "snell: {}\n", folder.note);
+  if (!folder.note.empty()) printMessage(stderr, "snell: {}\n", folder.note);
   return folder.dir.string();
 }
 
@@ -282,10 +284,10 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (options.validation && std::none_of(backends.begin(), backends.end(), [](const auto& name) {
         return backendRegistry().find(name).family == "vk";
       }))
-    fmt::print(stderr,
-               "snell: note: --validation checks Vulkan backends only, and this run has none "
-               "({})\n",
-               fmt::join(backends, ", "));
+    printMessage(stderr,
+                 "snell: note: --validation checks Vulkan backends only, and this run has none "
+                 "({})\n",
+                 fmt::join(backends, ", "));
   if (shard) {
     std::vector<Case> mine;
     for (std::size_t k = 0; k < run.cases.size(); ++k)
@@ -345,7 +347,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::unique_ptr<StreamingFile> json;
   if (!options.json.empty()) json = std::make_unique<StreamingFile>(options.json);
   for (const auto& slot : slots)
-    if (slot && json) json->writeLine(toJson(*slot).dump());
+    if (slot && json) json->writeLine(jsonText(toJson(*slot)));
   const InterruptFlag interrupt;
   SupervisorOptions supervisor;
   supervisor.executable = fs::read_symlink("/proc/self/exe").string();
@@ -388,9 +390,9 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     ++finished;
     CaseResult result = finishedCase;
     result.shard = shardLabel;
-    fmt::print(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
-               result.caseId, statusName(result.status), result.seconds);
-    if (json) json->writeLine(toJson(result).dump());
+    printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
+                 result.caseId, statusName(result.status), result.seconds);
+    if (json) json->writeLine(jsonText(toJson(result)));
     if (result.oracleResults > result.oracleStored) openImagesMeanwhile();
     slots[slotOfTask[task]] = std::move(result);
   });
@@ -413,8 +415,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       }
     if (again.empty()) break;
     superviseTasks(rerunTasks, supervisor, [&](std::size_t task, const CaseResult& result) {
-      fmt::print(stderr, "[rerun {}] {} {} {} ({:.2f}s)\n", round + 1, result.backend,
-                 result.caseId, statusName(result.status), result.seconds);
+      printMessage(stderr, "[rerun {}] {} {} {} ({:.2f}s)\n", round + 1, result.backend,
+                   result.caseId, statusName(result.status), result.seconds);
       again[task]->reruns.push_back(result.status);
     });
     run.interruptedBy = interrupt.signal();

@@ -13,10 +13,12 @@
 #include "cli/output_paths.h"
 #include "core/errors.h"
 #include "core/manifest.h"
+#include "core/message.h"
 #include "runner/backend_probe.h"
 #include "runner/builtin_eval.h"
 #include "runner/interrupt_flag.h"
 #include "sweep/listing_capture.h"
+#include "sweep/listing_draw.h"
 #include "sweep/sweep_charts.h"
 #include "sweep/sweep_report.h"
 #include "sweep/sweep_run.h"
@@ -78,8 +80,8 @@ Command addSweepCommand(CLI::App& app) {
       "(the spec allows anything there) or method (a Fresnel method past its error bound\n"
       "against exact Fresnel, or outside its physical range). The catalog's listings are drawn\n"
       "at the sweep's points on each driver (--listings). Exit 1 when an implementation\n"
-      "break was found; 2 when none of the listings --listings names (or, with --no-builtins,\n"
-      "no listing at all) could be swept, each with its reason.");
+      "break was found; 2, before anything is swept, when none of the listings --listings\n"
+      "names (or, with --no-builtins, no listing at all) can be swept, each with its reason.");
   return [options, sweep] {
     namespace fs = std::filesystem;
     if (!options->listingWorker.empty()) {
@@ -97,15 +99,36 @@ Command addSweepCommand(CLI::App& app) {
       throw UsageError(
           "nothing to sweep: --no-builtins with --listings '' leaves no built-in and "
           "no listing; name listings with --listings GLOB");
+    // Listings named with --listings of which none can be swept, or, with
+    // --no-builtins, no listing that can be: exit 0 would vouch for what was
+    // not checked, and whether a listing can be swept is known from its
+    // manifest, so it is refused here, before the minute of the built-ins.
+    const bool listingsNamed = sweep->count("--listings") > 0;
     if (!options->listings.empty()) {
       const std::vector<Manifest> catalog = loadCatalog(options->shaders);
-      if (std::none_of(catalog.begin(), catalog.end(), [&](const Manifest& m) {
-            return fnmatch(options->listings.c_str(), m.id.c_str(), 0) == 0;
-          }))
+      std::vector<std::string> unsweepable;
+      bool matched = false, sweepable = false;
+      for (const Manifest& m : catalog) {
+        if (fnmatch(options->listings.c_str(), m.id.c_str(), 0) != 0) continue;
+        matched = true;
+        if (const std::string why = sweep::whyNotSwept(m); !why.empty())
+          unsweepable.push_back(m.id + ": " + why);
+        else
+          sweepable = true;
+      }
+      if (!matched)
         throw UsageError(
             fmt::format("no listing matches --listings '{}'; `snell list` shows the "
                         "ids (a listing's id is its cases' ids without the scene)",
                         options->listings));
+      if (!sweepable && (listingsNamed || options->noBuiltins))
+        throw UsageError(fmt::format(
+            "{}: {}",
+            listingsNamed
+                ? fmt::format("no listing that --listings '{}' names can be swept",
+                              options->listings)
+                : "nothing to sweep: --no-builtins leaves the listings, and none of them can be",
+            fmt::join(unsweepable, "; ")));
     }
     const auto start = std::chrono::steady_clock::now();
     const std::string executable = fs::read_symlink("/proc/self/exe").string();
@@ -158,10 +181,10 @@ Command addSweepCommand(CLI::App& app) {
     for (const sweep::BackendSweep& s : result.sweeps)
       if (!s.points.empty() && std::all_of(s.points.begin(), s.points.end(),
                                            [](const sweep::Observation& o) { return o.timedOut; }))
-        fmt::print(stderr,
-                   "snell: note: every point on {} ran out of time: is --timeout {} s too short "
-                   "for this machine? (the default is 300)\n",
-                   s.backend, options->timeout);
+        printMessage(stderr,
+                     "snell: note: every point on {} ran out of time: is --timeout {} s too short "
+                     "for this machine? (the default is 300)\n",
+                     s.backend, options->timeout);
     const fs::path json =
         options->json.empty() ? fs::path(options->out) / "sweep.json" : fs::path(options->json);
     sweep::writeSweepJson(result, json);
@@ -185,25 +208,6 @@ Command addSweepCommand(CLI::App& app) {
     for (const sweep::ListingBreak& b : result.listings.breaks)
       implementation = implementation || b.cls == sweep::BreakClass::Implementation;
     if (implementation) return 1;
-    // Listings named with --listings of which none could be swept, or, with
-    // --no-builtins, no listing swept at all: exit 0 would vouch for what
-    // was not checked.
-    const bool listingsNamed = sweep->count("--listings") > 0 && !options->listings.empty();
-    if ((listingsNamed || options->noBuiltins) && result.listings.swept.empty() &&
-        !result.listings.notSwept.empty()) {
-      std::vector<std::string> why;
-      for (const sweep::ListingNote& n : result.listings.notSwept)
-        why.push_back(n.listing + ": " + n.note);
-      fmt::print(stderr, "snell: {}: {}\n",
-                 listingsNamed ? fmt::format("no listing that --listings '{}' names could be "
-                                             "swept{}",
-                                             options->listings,
-                                             options->noBuiltins ? "" : " (the built-ins were)")
-                               : "nothing was swept: --no-builtins leaves the listings, and none "
-                                 "of them could be",
-                 fmt::join(why, "; "));
-      return 2;
-    }
     return 0;
   };
 }

@@ -64,7 +64,9 @@ void writeGolden(const fs::path& root, const std::string& caseId, const std::str
   fs::create_directories(files.image.parent_path());
   writeImageAtomically(files.image, image);
   writeImageAtomically(files.preview, image);
-  writeFileAtomically(files.metadata, metadata.dump(2) + "\n");
+  writeFileAtomically(
+      files.metadata,
+      metadata.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 std::string cpuFeatures() {

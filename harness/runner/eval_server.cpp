@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/eval_server_protocol.h"
 #include "runner/interrupt_flag.h"
 #include "runner/socket_streams.h"
@@ -125,7 +126,7 @@ std::string EvalServer::run(std::FILE* log) {
     try {
       goOn = answer(connection.get(), log, why);
     } catch (const std::exception& error) {
-      fmt::print(log, "snell serve: a request failed: {}\n", error.what());
+      printMessage(log, "snell serve: a request failed: {}\n", error.what());
       std::fflush(log);
     }
     lastRequest = Clock::now();
@@ -140,7 +141,7 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     reply.error = std::move(message);
     const std::string trailer = replyTrailerLine(reply);
     writeAll(fd, trailer.c_str(), trailer.size());
-    fmt::print(log, "snell serve: refused a request: {}\n", reply.error);
+    printMessage(log, "snell serve: refused a request: {}\n", reply.error);
     std::fflush(log);
   };
   int client = 0;
@@ -148,7 +149,7 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
     refuse(fmt::format("this server (pid {}) answers only its own user's snell eval", getpid()));
     return true;
   }
-  fmt::print(log, "snell serve: a request from pid {}\n", client);
+  printMessage(log, "snell serve: a request from pid {}\n", client);
   std::fflush(log);
   SocketInput input(fd, interrupt_.flag(), kInputStallSeconds);
   input.setDeadline(Clock::now() + kHeaderSeconds);
@@ -229,10 +230,10 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
                                                             "and was let go before the end"
                                                           : "; the client left before the end";
   if (!reply.error.empty())
-    fmt::print(log, "snell serve: a request failed after {:.3f} s: {}{}\n", seconds, reply.error,
-               lost);
+    printMessage(log, "snell serve: a request failed after {:.3f} s: {}{}\n", seconds, reply.error,
+                 lost);
   else
-    fmt::print(
+    printMessage(
         log, "snell serve: {} line{} answered ({} outside the spec, {} malformed) in {:.3f} s{}\n",
         reply.summary.answered, reply.summary.answered == 1 ? "" : "s", reply.summary.outsideSpec,
         reply.summary.malformed, seconds, lost);

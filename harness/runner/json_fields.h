@@ -5,8 +5,17 @@
 #include <cstdint>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace snell {
+
+// A document as text. Strings from outside (a driver's compile log, a path,
+// quoted shader source) need not be UTF-8, and the library's dump() throws
+// on a byte that is not: it is written as U+FFFD instead, so that a record
+// is never lost to a byte in its log.
+inline std::string jsonText(const nlohmann::json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 // A non-finite value (a slack past every bound) is written as null.
 inline nlohmann::json jsonNumber(double x) {

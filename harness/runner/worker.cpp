@@ -16,6 +16,7 @@
 #include "runner/case_result_json.h"
 #include "runner/case_runner.h"
 #include "runner/case_validation.h"
+#include "runner/json_fields.h"
 
 namespace snell {
 
@@ -40,7 +41,7 @@ int runWorker(const WorkerOptions& options) {
   const BackendEntry& entry = backendRegistry().find(options.backend);
   if (options.describe) {
     const std::unique_ptr<Backend> backend = makeBackend(entry.name, backendOptions(options));
-    std::cout << driverJson(backend->driverInfo()).dump() << std::endl;
+    std::cout << jsonText(driverJson(backend->driverInfo())) << std::endl;
     return 0;
   }
   const std::vector<Manifest> manifests = loadManifests(options.shaders);
@@ -77,7 +78,7 @@ int runWorker(const WorkerOptions& options) {
     }
     CaseResult result = runner->run(*it->second);
     result.phases[Phase::Start] = std::exchange(startSeconds, 0.0);
-    std::cout << toJson(result).dump() << std::endl;  // endl: flush per case
+    std::cout << jsonText(toJson(result)) << std::endl;  // endl: flush per case
   }
   return 0;
 }

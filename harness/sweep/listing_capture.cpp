@@ -15,6 +15,7 @@
 #include "core/errors.h"
 #include "core/scene.h"
 #include "runner/interrupt_flag.h"
+#include "runner/json_fields.h"
 #include "runner/worker_process.h"
 
 namespace snell::sweep {
@@ -58,7 +59,7 @@ std::string drawCaptureLine(std::size_t draw, const DrawCapture& capture) {
     varyings.push_back({{"name", v.name}, {"components", v.components}, {"data", data}});
   }
   line["varyings"] = varyings;
-  return line.dump();
+  return jsonText(line);
 }
 
 DrawCapture drawCaptureFromLine(const std::string& text) {

@@ -13,6 +13,7 @@
 
 #include "oracle/builtin_probe.h"
 #include "runner/interrupt_flag.h"
+#include "runner/json_fields.h"
 #include "runner/worker_process.h"
 
 namespace snell::sweep {
@@ -75,7 +76,7 @@ std::string evalInput(const std::vector<SweepPoint>& points) {
     json line = {
         {"fn", point.call.fn}, {"I", jsonVector(point.call.I)}, {"N", jsonVector(point.call.N)}};
     if (point.call.fn == "refract") line["eta"] = jsonNumber(point.call.eta);
-    text += line.dump() + '\n';
+    text += jsonText(line) + '\n';
   }
   return text;
 }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
+#include "runner/json_fields.h"
 #include "sweep/listing_report.h"
 #include "sweep/sweep_summary.h"
 
@@ -110,7 +111,7 @@ void writeSweepJson(const SweepResult& result, const std::filesystem::path& path
   for (const Break& b : result.methodBreaks) breaks.push_back(methodBreak(result, b));
   out["breaks"] = breaks;
   if (result.listingsSwept) out["listings"] = listingSweepJson(result.listings);
-  writeFileAtomically(path, out.dump(1) + "\n");
+  writeFileAtomically(path, jsonText(out, 1) + "\n");
 }
 
 void printSweepTable(const SweepResult& result, std::FILE* file) {

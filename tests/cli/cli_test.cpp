@@ -453,4 +453,68 @@ TEST_P(EvalOnDriver, DriverResultsAreWithinSpec) {
 
 INSTANTIATE_TEST_SUITE_P(Backends, EvalOnDriver, ::testing::Values("gl", "vk"));
 
+// A compile log that is not UTF-8 (glslang quotes the bytes of a byte order
+// mark) made the Vulkan worker's result unwritable as JSON: the case was a
+// Crash with an internal error, and its log was lost. It is a CompileError
+// with the log whole, the bytes that are not UTF-8 written as U+FFFD.
+TEST(Cli, ACompileLogThatIsNotUtf8IsRecordedNotACrash) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-bom-{}", ::getpid());
+  const fs::path listing = dir / "shaders" / "bom";
+  fs::remove_all(dir);
+  fs::create_directories(listing);
+  std::ofstream(listing / "s.vert") << R"(#version 330 core
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform vec3 cameraPos;
+out vec3 R;
+void main()
+{
+    vec3 P = vec3(model * vec4(aPos, 1.0));
+    vec3 N = normalize(mat3(model) * aNormal);
+    R = refract(normalize(P - cameraPos), N, 0.66);
+    gl_Position = projection * view * vec4(P, 1.0);
+}
+)";
+  // The derived oracle reads the vertex stage only: the fragment stage's
+  // byte order mark reaches the drivers' compilers alone.
+  std::ofstream(listing / "s.frag", std::ios::binary) << "\xEF\xBB\xBF"
+                                                      << R"(#version 330 core
+out vec4 FragColor;
+in vec3 R;
+void main() { FragColor = vec4(R, 1.0); }
+)";
+  std::ofstream(listing / "manifest.toml") << R"(id = "bom"
+title = "a byte order mark"
+source = { file = "x", where = "y" }
+stages = { vertex = "s.vert", fragment = "s.frag" }
+[inputs]
+aPos = "scene.position"
+aNormal = "scene.normal"
+[uniforms]
+model = "scene.model"
+view = "scene.view"
+projection = "scene.projection"
+cameraPos = "scene.eye_position"
+[capture]
+vertex = ["R"]
+[[case]]
+scene = "torus"
+checks = ["vectors"]
+)";
+  const fs::path json = dir / "results.jsonl";
+  const Outcome o =
+      snell(fmt::format("run --backend vk -j 1 --filter '*/torus' --shaders {} --out {} --json {}",
+                        (dir / "shaders").string(), (dir / "out").string(), json.string()));
+  EXPECT_EQ(o.code, 1) << o.out;
+  std::ifstream results(json);
+  const auto records = jsonLines(std::string((std::istreambuf_iterator<char>(results)), {}));
+  ASSERT_EQ(records.size(), 1u) << o.out;
+  EXPECT_EQ(records[0]["status"], "CompileError") << records[0].dump();
+  EXPECT_EQ(o.out.find("internal error"), std::string::npos) << o.out;
+  fs::remove_all(dir);
+}
+
 }  // namespace

@@ -11,7 +11,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -410,6 +412,52 @@ TEST(EvalServerCli, AnEmptySocketPathIsExit2) {
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find("--socket: an empty path"), std::string::npos) << args << ": " << o.out;
   }
+}
+
+// `snell ARGS` through the shell with stdout and stderr as `redirections`
+// say; its exit code.
+int exitCode(const std::string& args, const std::string& redirections) {
+  const int status = std::system(fmt::format("{} {} {}", SNELL_BINARY, args, redirections).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// With stdout closed the client's socket took its number: the answers were
+// sent back into the client's own request and both sides waited (or it
+// died of SIGPIPE without a word). Refused before anything is read.
+TEST(EvalServerCli, AClosedStandardOutputIsExit2) {
+  const Scratch scratch("closed-stdout");
+  const fs::path input = scratch.file("lines.jsonl", kLines);
+  const fs::path log = scratch.dir / "log.txt";
+  for (const char* flags : {"", "--backend gl --server --socket /nonexistent.sock"}) {
+    EXPECT_EQ(exitCode(fmt::format("eval {} {}", flags, input.string()), ">&- 2>" + log.string()),
+              2)
+        << flags;
+    EXPECT_NE(readText(log).find("standard output is closed"), std::string::npos)
+        << flags << ": " << readText(log);
+  }
+}
+
+// A message that cannot be written (stderr on a full disk, a reader that
+// has left) is lost, and nothing else: fmt's exception from inside a catch
+// block aborted eval (exit 134) and the server, mid-request.
+TEST(EvalServerCli, AStderrThatCannotBeWrittenLosesOnlyTheMessages) {
+  const Scratch scratch("full-stderr");
+  const fs::path bad = scratch.file("bad.jsonl", "{\"fn\":\"x\"}\n");
+  EXPECT_EQ(exitCode("eval " + bad.string(), ">/dev/null 2>/dev/full"), 2);
+  EXPECT_EQ(exitCode("eval " + bad.string(), ">/dev/null 2>&-"), 2);
+  const fs::path socket = scratch.dir / "s.sock";
+  Server server({"--backend", "gl", "--socket", socket.string()}, "/dev/full");
+  for (int k = 0; k < 600 && !fs::exists(socket); ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  ASSERT_TRUE(fs::exists(socket)) << "the server did not start";
+  const fs::path input = scratch.file("lines.jsonl", kLines);
+  for (int request = 0; request < 2; ++request) {
+    const Outcome o = runSnell(
+        fmt::format("eval --backend gl --server --socket {} {}", socket.string(), input.string()));
+    EXPECT_EQ(o.code, 0) << o.out;
+    EXPECT_EQ(std::count(o.out.begin(), o.out.end(), '\n'), 3) << o.out;
+  }
+  EXPECT_FALSE(server.exitWithin(std::chrono::seconds(0)).has_value());
 }
 
 }  // namespace

@@ -278,5 +278,26 @@ TEST_F(GoldenCli, BlessRefusesAnImageThatIsOffTheReference) {
   EXPECT_EQ(fs::last_write_time(goldenExr()), before);
 }
 
+// --out naming the --golden folder (with or without a trailing slash): run
+// wrote its images over the goldens before comparing with them, so a wrong
+// shader passed, and the goldens were lost. Refused before any case.
+TEST_F(GoldenCli, OutIntoTheGoldenFolderIsRefusedBeforeAnyCase) {
+  const auto before = goldenTree(dir_ / "golden");
+  for (const std::string command : {"run", "bless"})
+    for (const std::string slash : {"", "/"}) {
+      const fs::path log = dir_ / "log.txt";
+      const std::string line = fmt::format(
+          "{} {} --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {}{} >{} 2>&1",
+          SNELL_BINARY, command, kCase, (dir_ / "shaders").string(), (dir_ / "golden").string(),
+          (dir_ / "golden").string(), slash, log.string());
+      const int status = std::system(line.c_str());
+      std::ifstream in(log);
+      const std::string output((std::istreambuf_iterator<char>(in)), {});
+      EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2) << line << "\n" << output;
+      EXPECT_NE(output.find("is also --golden"), std::string::npos) << output;
+      EXPECT_EQ(goldenTree(dir_ / "golden"), before) << line;
+    }
+}
+
 }  // namespace
 }  // namespace snell

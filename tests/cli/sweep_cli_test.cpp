@@ -155,25 +155,38 @@ TEST(SweepCli, ATimeoutOutOfRangeSaysTheRange) {
 }
 
 // Listings named with --listings of which none can be swept (here one that
-// reads back from the fragment stage only): the sweep checked nothing the
-// user asked for, and says why with exit 2, where it exited 0.
-TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2) {
-  const Outcome o = runSnell(
-      "sweep --quick --no-builtins --no-charts --backend gl --listings 'cs381/glass' --out "
-      "/tmp/snell-sweep-none");
-  EXPECT_EQ(o.code, 2) << o.out;
-  EXPECT_NE(o.out.find("no listing that --listings 'cs381/glass' names could be swept: "
-                       "cs381/glass: reads back from the fragment stage only"),
+// reads back from the fragment stage only): the sweep would check nothing
+// the user asked for. It says why with exit 2 before sweeping anything: it
+// exited 0, then 2 only after the built-ins' sweep had written its results.
+TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2BeforeAnySweep) {
+  const std::filesystem::path out = "/tmp/snell-sweep-none";
+  std::filesystem::remove_all(out);
+  for (const std::string builtins : {"--no-builtins ", ""}) {
+    const Outcome o =
+        runSnell("sweep --quick " + builtins +
+                 "--no-charts --backend gl --listings 'cs381/glass' --out " + out.string());
+    EXPECT_EQ(o.code, 2) << o.out;
+    EXPECT_NE(o.out.find("no listing that --listings 'cs381/glass' names can be swept: "
+                         "cs381/glass: reads back from the fragment stage only"),
+              std::string::npos)
+        << o.out;
+    EXPECT_FALSE(std::filesystem::exists(out)) << builtins << o.out;
+  }
+  // With --no-builtins and no --listings, every listing of a catalog that
+  // has none that can be swept.
+  const std::filesystem::path shaders = "/tmp/snell-sweep-none-shaders/cs381";
+  std::filesystem::remove_all(shaders.parent_path());
+  std::filesystem::create_directories(shaders);
+  std::filesystem::copy(std::filesystem::path(SNELL_SOURCE_ROOT) / "shaders/cs381/glass",
+                        shaders / "glass", std::filesystem::copy_options::recursive);
+  const Outcome all = runSnell("sweep --quick --no-builtins --no-charts --backend gl --shaders " +
+                               shaders.parent_path().string() + " --out " + out.string());
+  EXPECT_EQ(all.code, 2) << all.out;
+  EXPECT_NE(all.out.find("nothing to sweep: --no-builtins leaves the listings, and none of them "
+                         "can be: cs381/glass: reads back"),
             std::string::npos)
-      << o.out;
-  // With the built-ins swept beside them, the message says so.
-  const Outcome withBuiltins = runSnell(
-      "sweep --quick --no-charts --backend gl --listings 'cs381/glass' --out "
-      "/tmp/snell-sweep-none");
-  EXPECT_EQ(withBuiltins.code, 2) << withBuiltins.out;
-  EXPECT_NE(withBuiltins.out.find("names could be swept (the built-ins were): cs381/glass"),
-            std::string::npos)
-      << withBuiltins.out;
+      << all.out;
+  EXPECT_FALSE(std::filesystem::exists(out)) << all.out;
 }
 
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
