@@ -480,6 +480,16 @@ class ManifestReader {
       spec.line = lineOf(node);
       spec.scene = requiredString(table, "scene", spec.line);
       spec.line = lineOf(*table.get("scene"));  // point messages at the scene, not the header
+      // A scene's name is a folder below --out and --golden (the case's id
+      // ends in it): a path there ("../../x") put a case's images and
+      // goldens outside both, on top of each other's.
+      if (spec.scene.empty() || spec.scene == "." || spec.scene == ".." ||
+          !std::all_of(spec.scene.begin(), spec.scene.end(), isListingIdCharacter))
+        fail(spec.line,
+             fmt::format("scene \"{}\" is not a scene's name: a name is letters, digits, '.', "
+                         "'-', '_' and '+' (no '/'), as in \"sphere\"; the scenes are the files "
+                         "of scenes/ without .toml",
+                         spec.scene));
       if (const toml::node* checks = table.get("checks")) {
         spec.checks = stringArray(*checks, "checks");
         if (spec.checks.empty())

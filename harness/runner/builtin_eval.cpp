@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
@@ -58,6 +59,23 @@ std::string validUtf8(const std::string& text) {
   return json::parse(dumpText(text)).get<std::string>();
 }
 
+// Whether a parse error stopped at a bare NaN or Infinity (JavaScript's
+// spellings, which JSON does not have), for a hint at the strings it takes.
+bool stoppedAtNonFiniteWord(std::string_view text, const json::exception& error) {
+  const auto* parse = dynamic_cast<const json::parse_error*>(&error);
+  if (!parse || parse->byte == 0 || parse->byte > text.size()) return false;
+  const auto isWordByte = [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '-' || c == '+';
+  };
+  std::size_t begin = parse->byte - 1, end = parse->byte - 1;
+  while (begin > 0 && isWordByte(text[begin - 1])) --begin;
+  while (end < text.size() && isWordByte(text[end])) ++end;
+  std::string word(text.substr(begin, end - begin));
+  if (!word.empty() && (word[0] == '-' || word[0] == '+')) word.erase(0, 1);
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return word == "nan" || word == "inf" || word == "infinity";
+}
+
 void parseLine(Line& line, std::string_view text, bool onDriver) {
   if (text.find_first_not_of(" \t\r") == std::string_view::npos) {
     line.blank = true;
@@ -84,7 +102,11 @@ void parseLine(Line& line, std::string_view text, bool onDriver) {
     std::string why = readableError(error);
     if (const std::size_t at = why.find("at line 1, column "); at != std::string::npos)
       why.replace(at, 18, "at column ");
-    line.error = fmt::format("not valid JSON ({})", why);
+    line.error = fmt::format("not valid JSON ({}){}", why,
+                             stoppedAtNonFiniteWord(text, error)
+                                 ? "; JSON has no NaN or infinity: write the strings \"nan\", "
+                                   "\"inf\" or \"-inf\""
+                                 : "");
   } catch (const UsageError& error) {
     line.error = error.what();
   }

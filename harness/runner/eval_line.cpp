@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,9 +17,25 @@ namespace {
 
 using nlohmann::json;
 
-// A number, or "nan", "inf" or "-inf" (JSON has none of them).
+// At most `limit` bytes of a value the line gave, for a message: a line of
+// megabytes is not echoed whole.
+std::string shortened(const std::string& text, std::size_t limit = 64) {
+  return text.size() <= limit ? text : text.substr(0, limit) + "...";
+}
+
+// A number, or "nan", "inf" or "-inf" (JSON has none of them). A finite
+// number past the float range would be an infinity the line did not write.
 float number(const json& x, const char* key) {
-  if (x.is_number()) return static_cast<float>(x.get<double>());
+  if (x.is_number()) {
+    const double value = x.get<double>();
+    const auto single = static_cast<float>(value);
+    if (std::isinf(single))
+      throw UsageError(fmt::format(
+          "\"{}\" holds {}, past the largest float ({}): it would be read as an infinity; write "
+          "\"inf\" or \"-inf\" for one",
+          key, shortened(x.dump()), std::numeric_limits<float>::max()));
+    return single;
+  }
   if (x.is_string()) {
     const std::string text = x.get<std::string>();
     if (text == "nan") return std::numeric_limits<float>::quiet_NaN();
@@ -56,6 +73,11 @@ std::vector<float> floatVector(const json& object, const char* key) {
 }  // namespace
 
 json parseEvalJson(std::string_view text) {
+  // The JSON reader stops at a NUL byte as at the end of the text: what
+  // follows it would be dropped without a word.
+  if (const std::size_t nul = text.find('\0'); nul != std::string_view::npos)
+    throw UsageError(fmt::format(
+        "a NUL byte at column {}: a line is one JSON object in text; remove the byte", nul + 1));
   // A key given twice leaves the object with fewer members than keys: the
   // keys are only counted, and named on a second pass only then.
   std::size_t keys = 0;
@@ -94,7 +116,7 @@ BuiltinCall parseEvalObject(const json& object) {
   BuiltinCall call;
   call.fn = object.at("fn").get<std::string>();
   if (call.fn != "reflect" && call.fn != "refract")
-    throw UsageError(fmt::format("unknown fn \"{}\": {}", call.fn, kFunctions));
+    throw UsageError(fmt::format("unknown fn \"{}\": {}", shortened(call.fn), kFunctions));
   call.I = floatVector(object, "I");
   call.N = floatVector(object, "N");
   if (call.I.size() != call.N.size())

@@ -1,6 +1,7 @@
 #include "runner/eval_line_fast.h"
 
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 
 namespace snell {
@@ -73,23 +74,24 @@ class Reader {
         std::int64_t value = 0;
         if (std::from_chars(begin, at_, value).ec == std::errc()) {
           out = static_cast<float>(static_cast<double>(value));
-          return true;
+          return !std::isinf(out);
         }
       } else {
         std::uint64_t value = 0;
         if (std::from_chars(begin, at_, value).ec == std::errc()) {
           out = static_cast<float>(static_cast<double>(value));
-          return true;
+          return !std::isinf(out);
         }
       }
     }
     // Out of range (nlohmann rejects an overflow; an underflow it reads as
-    // strtod does): nlohmann decides.
+    // strtod does): nlohmann decides. So does a number past the float
+    // range, which the slow path refuses.
     double value = 0;
     const auto [end, error] = std::from_chars(begin, at_, value);
     if (error != std::errc() || end != at_) return false;
     out = static_cast<float>(value);
-    return true;
+    return !std::isinf(out);
   }
 
   // [n, n, ...] with 1 to 4 numbers.

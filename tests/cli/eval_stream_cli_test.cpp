@@ -71,6 +71,36 @@ TEST(EvalStreamCli, AJsonErrorNamesItsColumnWithinTheLine) {
   fs::remove(input);
 }
 
+// JavaScript's NaN and Infinity are not JSON: the error says which strings
+// the line takes instead. A NUL byte ended the line for the JSON reader,
+// and what followed it was dropped without a word: the line is refused.
+TEST(EvalStreamCli, NanTokensAndNulBytesAreNamedWithWhatToWrite) {
+  std::string text =
+      "{\"fn\":\"reflect\",\"I\":[NaN,1],\"N\":[0,1]}\n"
+      "{\"fn\":\"refract\",\"I\":[0,-1],\"N\":[0,1],\"eta\":-Infinity}\n"
+      "{\"fn\":\"reflect\",\"I\":[0.6,-0.8],\"N\":[0,1]}";
+  text += '\0';
+  text += "{\"fn\":\"refract\"}\n";
+  const fs::path input = writeInput("eval-nan", text);
+  const Outcome o = runSnell(fmt::format("eval {}", input.string()));
+  EXPECT_EQ(o.code, 2) << o.out;
+  const auto answers = snell::testing::jsonLines(o.out);
+  ASSERT_EQ(answers.size(), 3u) << o.out;
+  for (int k = 0; k < 2; ++k) {
+    const std::string error = answers[k].value("error", "");
+    EXPECT_NE(error.find("not valid JSON (parse error at column"), std::string::npos) << error;
+    EXPECT_NE(error.find("JSON has no NaN or infinity: write the strings \"nan\", \"inf\" or "
+                         "\"-inf\""),
+              std::string::npos)
+        << error;
+  }
+  EXPECT_EQ(answers[2].value("error", ""),
+            "line 3: a NUL byte at column 42: a line is one JSON "
+            "object in text; remove the byte")
+      << o.out;
+  fs::remove(input);
+}
+
 TEST(EvalStreamCli, BadChunkSizeOrThreadCountIsExit2NamingTheVariable) {
   const fs::path input = writeInput("eval-chunk0", "{\"fn\":\"reflect\",\"I\":[1],\"N\":[1]}\n");
   // Past the limits a mistyped value would hold the machine's memory or

@@ -222,6 +222,20 @@ TEST_F(ManifestTest, AnIdThatWouldLeaveItsFolderIsRefused) {
   EXPECT_EQ(listingIdProblem("methods/fresnel/1-constant-mix"), "");
 }
 
+// A scene's name ends the case's id, a folder below --out and --golden: a
+// path there put the case's images and goldens outside both, and on top of
+// each other's. Refused at its line.
+TEST_F(ManifestTest, ASceneThatIsAPathIsRefused) {
+  for (const char* bad :
+       {"../../../work/main/scenes/sphere", "..", ".", "a/sphere", "/tmp/x", ""}) {
+    std::string text = kValid;
+    text.replace(text.find("scene = \"sphere\""), 16, fmt::format("scene = \"{}\"", bad));
+    const std::string message = errorOf(text);
+    EXPECT_NE(message.find("manifest.toml:"), std::string::npos) << bad << ": " << message;
+    EXPECT_NE(message.find("is not a scene's name"), std::string::npos) << bad << ": " << message;
+  }
+}
+
 // TOML's nan and inf are numbers; a tolerance or a time limit must be a
 // finite one in its range, and a line number one that fits.
 TEST_F(ManifestTest, NumbersOutOfTheirRangeNameTheirLine) {

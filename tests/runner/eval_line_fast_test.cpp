@@ -57,13 +57,22 @@ TEST(EvalLineFast, ReadsTheCommonShapeAsNlohmannDoes) {
       R"( { "eta" : 1.5E+0 , "N" : [ -0 , 1 ] , "I" : [ 1e-3 , -1 ] , "fn" : "refract" } )",
       R"({"fn":"refract","I":[-0],"N":[-0.0],"eta":-0})",
       R"({"fn":"refract","I":[1,2,3,4],"N":[9007199254740993,-9223372036854775808,18446744073709551615,1e-300],"eta":1})",
-      R"({"fn":"refract","I":[3.4028235677973366e38,1e-46,0.1],"N":[0,1,0],"eta":0.66})",
+      R"({"fn":"refract","I":[3.4028235677973362e38,1e-46,0.1],"N":[0,1,0],"eta":0.66})",
       R"({"fn":"refract","I":[99999999999999999999999,-99999999999999999999999,0],"N":[0,1,0],"eta":1})",
       "{\"fn\":\"reflect\",\"I\":[1],\"N\":[1]}\r",
   };
   for (const std::string& text : common) {
     EXPECT_TRUE(parseCommonEvalLine(text)) << "left to the slow path: " << text;
     expectAgrees(text);
+  }
+  // Past the float range (the first value rounds up to an infinity): left
+  // to the slow path, which refuses it.
+  for (const std::string text :
+       {R"({"fn":"refract","I":[3.4028235677973366e38],"N":[1],"eta":1})",
+        R"({"fn":"refract","I":[1],"N":[-1e39],"eta":1})",
+        R"({"fn":"refract","I":[1],"N":[1],"eta":340282356779733661637539395458142568448})"}) {
+    EXPECT_FALSE(parseCommonEvalLine(text)) << text;
+    EXPECT_THROW(parseEvalLine(text), UsageError) << text;
   }
   // Underflow: nlohmann reads 1e-400 as strtod does; either way, the same call.
   expectAgrees(R"({"fn":"refract","I":[1e-400],"N":[-1e-400],"eta":1})");

@@ -41,6 +41,21 @@ TEST(EvalLine, AMistakeIsNamedWithWhatToWrite) {
             R"("n2" is given twice)"}}) {
     EXPECT_NE(refusal(line).find(expected), std::string::npos) << line << ": " << refusal(line);
   }
+  // A finite number past the float range would be read as an infinity the
+  // line did not write; the largest float and what rounds to it are read.
+  EXPECT_NE(
+      refusal(R"({"fn":"reflect","I":[1e39,-0.8],"N":[0,1]})")
+          .find(R"("I" holds 1e+39, past the largest float (3.4028235e+38): it would be read )"
+                R"(as an infinity; write "inf" or "-inf" for one)"),
+      std::string::npos)
+      << refusal(R"({"fn":"reflect","I":[1e39,-0.8],"N":[0,1]})");
+  EXPECT_NE(refusal(R"({"fn":"refract","I":[0,-1],"N":[0,1],"eta":-3.4028235677973366e38})")
+                .find(R"("eta" holds)"),
+            std::string::npos);
+  EXPECT_EQ(refusal(R"({"fn":"refract","I":[3.4028235677973362e38],"N":[1],"eta":1})"), "");
+  // A value of megabytes is not echoed whole.
+  EXPECT_LT(refusal(R"({"fn":")" + std::string(1 << 20, 'x') + R"(","I":[1],"N":[1]})").size(),
+            400u);
   // A key twice inside a nested value is that value's business, not the line's.
   EXPECT_EQ(refusal(R"({"fn":"reflect","I":[0,-1],"N":[0,1],"note":{"a":1,"a":2}})"), "");
   EXPECT_EQ(refusal(R"({"fn":"refract","I":[0,-1],"N":[0,1],"eta":1.5})"), "");
