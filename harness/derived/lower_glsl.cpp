@@ -7,6 +7,7 @@
 #include <glslang/Public/ShaderLang.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <map>
 #include <optional>
@@ -306,11 +307,16 @@ class Lowering {
     const auto same = [](const Value& a, const Value& b) {
       return a.regs == b.regs && a.refusal == b.refusal;
     };
+    for (const auto& [key, value] : afterElse)
+      if (!afterThen.count(key)) assignedOneWayOnly_[key] = node.getLoc().line;
     for (const auto& [key, then] : afterThen) {
       auto otherwise = afterElse.find(key);
       // Declared inside one way only (a block's local), or written one way
       // only where it was unset before: not a value after the if.
-      if (otherwise == afterElse.end()) continue;
+      if (otherwise == afterElse.end()) {
+        assignedOneWayOnly_[key] = node.getLoc().line;
+        continue;
+      }
       variables_[key] = same(then, otherwise->second)
                             ? then
                             : builder_.select(condition, then, otherwise->second,
@@ -808,8 +814,18 @@ class Lowering {
           "compute; name an output or a local of main()",
           source_.file, name));
     const auto snapshot = snapshots_.find(name);
-    const Value& value =
-        snapshot != snapshots_.end() ? snapshot->second : variables_.at(key->second);
+    const auto variable = variables_.find(key->second);
+    if (snapshot == snapshots_.end() && variable == variables_.end()) {
+      const auto oneWay = assignedOneWayOnly_.find(key->second);
+      throw UsageError(
+          oneWay != assignedOneWayOnly_.end()
+              ? fmt::format("{}:{}: '{}' is assigned on one way of this if only, so main() "
+                            "leaves it unset on the other; give it a value on both ways (an "
+                            "else, or before the if)",
+                            source_.file, oneWay->second, name)
+              : fmt::format("{}: '{}' is never assigned by main()", source_.file, name));
+    }
+    const Value& value = snapshot != snapshots_.end() ? snapshot->second : variable->second;
     if (!value.refusal.empty())
       throw UsageError(fmt::format("{} (needed for '{}'); {}", value.refusal, name, kAdvice));
     if (std::find(value.regs.begin(), value.regs.end(), kUnassigned) != value.regs.end())
@@ -827,6 +843,8 @@ class Lowering {
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;
+  // Variables an if left unset on one of its ways, and the if's line.
+  std::map<Key, int> assignedOneWayOnly_;
   std::map<Key, long long> ints_;  // the compile-time ints (loop counters, their bounds)
   std::map<std::string, Key> names_;
   std::vector<std::string> writtenOutputs_;
@@ -837,10 +855,24 @@ class Lowering {
 
 }  // namespace
 
-Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs) {
+bool testsVulkanMacro(const std::string& text) {
+  for (std::size_t at = text.find("VULKAN"); at != std::string::npos;
+       at = text.find("VULKAN", at + 1)) {
+    const auto identifierByte = [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    const bool startsWord = at == 0 || !identifierByte(text[at - 1]);
+    const bool endsWord = at + 6 == text.size() || !identifierByte(text[at + 6]);
+    if (startsWord && endsWord) return true;
+  }
+  return false;
+}
+
+Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs,
+                    LowerOptions options) {
   std::vector<OutputRequest> requests;
   for (const std::string& name : outputs) requests.push_back({name, 0});
-  return lowerOutputs(source, requests);
+  return lowerOutputs(source, requests, options);
 }
 
 Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
@@ -853,6 +885,7 @@ Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest
   const int length = static_cast<int>(text.size());
   const char* name = source.file.c_str();
   shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+  if (options.vulkanMacros) shader.setPreamble("#define VULKAN 100\n");
   if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) {
     std::string log = shader.getInfoLog();
     log.erase(log.find_last_not_of(" \t\r\n") + 1);

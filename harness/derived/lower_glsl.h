@@ -50,7 +50,15 @@ struct LowerOptions {
   // lookup's result is a colour, which the image check gates, and GLSL 4.60
   // section 4.7.1 gives inverse() no precision, so no interval bounds it.
   bool doubleOnly = false;
+  // The text as a Vulkan driver's compiler preprocesses it, with VULKAN
+  // defined (GL_KHR_vulkan_glsl): a shader that tests it is another text
+  // there, and its vk results are held against that one.
+  bool vulkanMacros = false;
 };
+
+// Whether the text names VULKAN, the macro the two APIs' compilers set
+// differently: its derived oracle is then lowered once for each.
+bool testsVulkanMacro(const std::string& text);
 
 // The program computing `outputs`; none means every output variable the
 // shader writes. Operations no output needs are dropped. In a fragment
@@ -61,6 +69,7 @@ struct LowerOptions {
 Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
                      LowerOptions options = {});
 // The same, every name at the end of main().
-Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs = {});
+Program lowerShader(const ShaderSource& source, const std::vector<std::string>& outputs = {},
+                    LowerOptions options = {});
 
 }  // namespace snell::derived

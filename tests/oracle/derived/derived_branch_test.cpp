@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "derived_listings.h"
 #include "oracle/interval.h"
@@ -39,6 +40,37 @@ void main() {
   EXPECT_TRUE(contains(allowed[0][0], 2.0f));
   EXPECT_FALSE(contains(allowed[0][0], 1.0f));
   EXPECT_TRUE(contains(allowed[1][1], 6.0f));
+}
+
+// A text that tests VULKAN is another text on a Vulkan driver, whose
+// compiler defines it: the derived oracle follows each API's text, and
+// answers by the rules (only a Vulkan driver is judged by Vulkan's). It
+// followed the OpenGL text for both, and failed a correct Vulkan driver.
+TEST(DerivedBranch, AShaderThatTestsVulkanIsFollowedOnEachApi) {
+  const std::string text = R"(#version 140
+in float x;
+out float y;
+#ifdef VULKAN
+#define SCALE 3.0
+#else
+#define SCALE 2.0
+#endif
+void main() { y = SCALE * x; }
+)";
+  EXPECT_TRUE(derived::testsVulkanMacro(text));
+  EXPECT_FALSE(derived::testsVulkanMacro("#define NOT_VULKAN_ 1\nfloat VULKANISH;"));
+  const auto oracle = derived::makeDerivedVertexOracle({"user.vert", text});
+  const AttributeMap inputs = oneInput("x", {1.0f});
+  const UniformMap uniforms;
+  const ConstantMap constants;
+  for (const auto& [rules, expected] :
+       {std::pair{PrecisionRules::Glsl, 2.0}, std::pair{PrecisionRules::Vulkan, 3.0}}) {
+    const std::vector<OracleVarying> y = oracle->evaluate({uniforms, constants, inputs, 1, rules});
+    ASSERT_EQ(y.size(), 1u);
+    EXPECT_EQ(y[0].reference[0], expected) << precisionRulesName(rules);
+    EXPECT_LE(y[0].lo[0], expected);
+    EXPECT_GE(y[0].hi[0], expected);
+  }
 }
 
 // A for loop with a constant bound is unrolled; float(m) is its counter.

@@ -66,6 +66,25 @@ void main() {
                        "user.vert:6: a return before the end of f()"));
 }
 
+// An output written on one way of an if only: main() leaves it unset on
+// the other. It was an internal error ("map::at") with no file or line.
+TEST(DerivedRefusal, AnOutputAssignedOnOneWayOfAnIfOnlyIsRefusedWithTheIfsLine) {
+  for (const char* ways : {"if (position.x < 0.5)\n    t = 1.0;",
+                           "if (position.x < 0.5) {\n  } else {\n    t = 1.0;\n  }"}) {
+    const std::string message = refusalOf(std::string(R"(#version 140
+in vec4 position;
+out float t;
+void main() {
+  )") + ways + R"(
+  gl_Position = position;
+}
+)",
+                                          derived::Stage::Vertex, {"t"});
+    EXPECT_TRUE(mentions(message, "user.vert:5: 't' is assigned on one way of this if only"))
+        << message;
+  }
+}
+
 TEST(DerivedRefusal, ATextureLookupInTheVertexStageIsRefusedWithItsLine) {
   const std::string message = refusalOf(R"(#version 140
 in vec4 position;
