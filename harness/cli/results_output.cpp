@@ -1,11 +1,15 @@
 #include "cli/results_output.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <string.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "baseline/results_csv.h"
 #include "cli/shell_word.h"
@@ -30,6 +34,32 @@ void printWorstSlack(const std::vector<CaseResult>& results) {
   // read as a perfect score).
   for (const auto& [backend, slack] : worst)
     if (checked[backend] > 0) fmt::print("{}: worst slack {:.3f}\n", backend, slack);
+}
+
+// Image cases held against the CPU reference only, their driver having no
+// golden in --golden (a new driver, or a --golden folder that is not the
+// one blessed into): said after the table, where a whole run of them passed
+// with the fact inside each case's message only.
+void printCasesWithoutGoldens(const std::vector<CaseResult>& results) {
+  std::vector<const CaseResult*> without;
+  for (const CaseResult& r : results) {
+    const auto against = [&](const char* kind) {
+      return std::any_of(r.images.begin(), r.images.end(),
+                         [&](const ImageComparison& c) { return c.against == kind; });
+    };
+    if (against("reference") && !against("golden")) without.push_back(&r);
+  }
+  if (without.empty()) return;
+  std::vector<std::string> named;
+  for (std::size_t k = 0; k < without.size() && k < 4; ++k)
+    named.push_back(fmt::format("{} on {}", without[k]->caseId, without[k]->backend));
+  if (without.size() > named.size())
+    named.push_back(fmt::format("{} more", without.size() - named.size()));
+  fmt::print(
+      "\n{} image case(s) had no golden for their driver, so only the CPU reference gated "
+      "them: {}; `snell bless` with this run's --filter, --backend and --golden writes their "
+      "goldens\n",
+      without.size(), fmt::join(named, ", "));
 }
 
 }  // namespace
@@ -75,6 +105,7 @@ int reportResults(const std::vector<CaseResult>& results, const ExpectationSet& 
     if (r.status == Status::ExpectedCompileError || r.status == Status::NotSupported)
       fmt::print("\n{} on {}: {}: {}", r.caseId, r.backend, statusName(r.status),
                  asLines(r.message));
+  printCasesWithoutGoldens(results);
   if (!expectations.empty() || report.count(Outcome::Flake) > 0) {
     printBaselineReport(std::cout, expectations, report);
   }

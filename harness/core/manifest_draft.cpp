@@ -17,6 +17,7 @@
 #include "core/glsl_statements.h"
 #include "core/manifest.h"
 #include "core/shader_conventions.h"
+#include "core/utf8.h"
 
 namespace snell {
 namespace {
@@ -156,6 +157,12 @@ struct Stage {
 };
 
 Stage readStageFile(const fs::path& dir, const std::string& file) {
+  // The manifest names the file in a TOML string, which must be UTF-8.
+  if (!isUtf8(file))
+    throw UsageError(
+        fmt::format("{}: the file's name is not UTF-8, which a manifest cannot name; "
+                    "rename the file",
+                    utf8SpellingOutOthers((dir / file).string())));
   Stage stage{file, readStage(dir / file), {}, {}};
   requireMain(stage.source, dir / file);
   stage.code = withoutComments(stage.source);
@@ -516,8 +523,10 @@ Draft draftOf(const DraftRequest& request) {
   uniformsSection(out, vertex, fragment);
   captureSection(out, request, vertex, fragment);
   casesSection(out, vertex, fragment.has_value());
-  // With a fragment stage the cases compare images (casesSection).
-  return {out.str(), fragment.has_value()};
+  // With a fragment stage the cases compare images (casesSection). The
+  // comments quote the shader's lines, which may be in another encoding
+  // (a Latin-1 comment): TOML must be UTF-8, so other bytes are spelled out.
+  return {utf8SpellingOutOthers(out.str()), fragment.has_value()};
 }
 
 DraftWritten writeDraftManifest(const DraftRequest& request, bool force) {

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/utf8.h"
 #include "runner/checks/check_kind.h"
 
 namespace snell {
@@ -44,28 +45,8 @@ namespace {
 // The length of the UTF-8 sequence at `text[at]` that XML 1.0 can carry
 // (a character other than U+FFFE and U+FFFF, well formed), or 0.
 std::size_t xmlCharacterLength(std::string_view text, std::size_t at) {
-  const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
-  const unsigned char lead = byte(0);
-  std::size_t length = 0;
-  char32_t code = 0;
-  if (lead < 0x80) return 1;
-  if (lead >= 0xC2 && lead <= 0xDF)
-    length = 2, code = lead & 0x1F;
-  else if (lead >= 0xE0 && lead <= 0xEF)
-    length = 3, code = lead & 0x0F;
-  else if (lead >= 0xF0 && lead <= 0xF4)
-    length = 4, code = lead & 0x07;
-  else
-    return 0;
-  if (at + length > text.size()) return 0;
-  for (std::size_t k = 1; k < length; ++k) {
-    if ((byte(k) & 0xC0) != 0x80) return 0;
-    code = (code << 6) | (byte(k) & 0x3F);
-  }
-  const bool shortest = (length == 2 && code >= 0x80) || (length == 3 && code >= 0x800) ||
-                        (length == 4 && code >= 0x10000 && code <= 0x10FFFF);
-  const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
-  return shortest && !surrogate && code != 0xFFFE && code != 0xFFFF ? length : 0;
+  const Utf8Character c = utf8CharacterAt(text, at);
+  return c.code == 0xFFFE || c.code == 0xFFFF ? 0 : c.length;
 }
 
 // XML 1.0 has no way to write most control characters, not even as

@@ -299,5 +299,30 @@ TEST_F(GoldenCli, OutIntoTheGoldenFolderIsRefusedBeforeAnyCase) {
     }
 }
 
+// Against a --golden folder with no golden for the driver (not the one
+// blessed into) every image case passed on the CPU reference alone, and
+// the summary said nothing: it now says how many and which.
+TEST_F(GoldenCli, ImageCasesWithoutAGoldenAreSaidInTheSummary) {
+  const Outcome blessed = snell("run");
+  EXPECT_EQ(blessed.code, 0) << blessed.output;
+  EXPECT_EQ(blessed.output.find("had no golden"), std::string::npos) << blessed.output;
+  fs::create_directories(dir_ / "empty");
+  const fs::path log = dir_ / "log.txt";
+  const int status = std::system(
+      fmt::format(
+          "{} run --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} >{} 2>&1",
+          SNELL_BINARY, kCase, (dir_ / "shaders").string(), (dir_ / "empty").string(),
+          (dir_ / "out").string(), log.string())
+          .c_str());
+  std::ifstream in(log);
+  const std::string output((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << output;
+  EXPECT_NE(output.find("1 image case(s) had no golden for their driver, so only the CPU "
+                        "reference gated them: " +
+                        kCase + " on gl"),
+            std::string::npos)
+      << output;
+}
+
 }  // namespace
 }  // namespace snell

@@ -94,6 +94,26 @@ TEST_F(InitCli, OutputsThatCannotBeGatedSayWhy) {
   EXPECT_FALSE(fs::exists(dir_ / "manifest.toml"));
 }
 
+// A Latin-1 comment on a line the draft quotes (here in the note on an
+// output it cannot gate) made a manifest snell could not read ("not valid
+// TOML: invalid utf-8"): the byte is spelled out as \xNN.
+TEST_F(InitCli, ACommentInAnotherEncodingStillDraftsAManifestSnellReads) {
+  std::ofstream(dir_ / "a.vert") << "#version 330 core\nin vec3 aPos;\nin vec3 aNormal;\n"
+                                    "uniform mat4 model;\nout vec3 R;\nout vec3 Normal;\n"
+                                    "void main() {\n"
+                                    "  Normal = mat3(inverse(model)) * aNormal; // normale \xe9\n"
+                                    "  R = refract(normalize(aPos), normalize(aNormal), 0.66);\n"
+                                    "  gl_Position = vec4(aPos, 1.0);\n}\n";
+  const auto outcome = runSnell("init " + dir_.string());
+  EXPECT_EQ(outcome.code, 0) << outcome.out;
+  std::ifstream in(dir_ / "manifest.toml");
+  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_NE(text.find("// normale \\xe9"), std::string::npos) << text;
+  const auto checked = runSnell("list --check --shaders " + dir_.string());
+  EXPECT_EQ(checked.out.find("not valid TOML"), std::string::npos) << checked.out;
+  EXPECT_EQ(checked.out.find("invalid utf-8"), std::string::npos) << checked.out;
+}
+
 // The next step the command names can be pasted as it is: the folder
 // quoted when it holds a space, and the goldens blessed first, into a
 // folder of the user's own, when the draft has image cases (a new case with

@@ -167,6 +167,20 @@ TEST_F(ManifestDraft, LearnOpenGlRefractionBindsWithoutRenaming) {
   expectRunnable(m);
 }
 
+// A file name that is not UTF-8, which a manifest's TOML cannot name, is
+// refused, naming the file.
+TEST_F(ManifestDraft, AFileNameThatIsNotUtf8IsRefused) {
+  put(std::string("r\xe9") + "fraction.vert", kLearnOpenGlVertex);
+  try {
+    draftManifest({dir_, "", "", ""});
+    FAIL() << "drafted";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("r\\xe9fraction.vert: the file's name is not UTF-8"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 // A statement that looks a colour up is no direction to check: Listing
 // 14.1's fragment stage (two lookups and a mix) gets no fragment capture,
 // where capturing `refractColor` and the input it reads left the derived
