@@ -24,17 +24,30 @@ std::vector<Case> expandCases(const std::vector<Manifest>& manifests, const std:
 
 namespace {
 
+// A semantic the scene lacks, or one of the other kind: an input takes a
+// per-vertex semantic, a uniform one value for the draw (or a texture).
 [[noreturn]] void unknownSemantic(const Manifest& manifest, const Binding& binding,
-                                  const Scene& scene, const std::string& semantic) {
-  std::vector<std::string> known;
-  for (const auto& [name, value] : scene.values) known.push_back("scene." + name);
-  for (const auto& [name, value] : scene.attributes) known.push_back("scene." + name);
-  for (const std::string& name : scene.samplers) known.push_back("scene." + name);
+                                  const Scene& scene, const std::string& semantic, bool input) {
+  std::vector<std::string> perVertex, perDraw;
+  for (const auto& [name, value] : scene.attributes) perVertex.push_back("scene." + name);
+  for (const auto& [name, value] : scene.values) perDraw.push_back("scene." + name);
+  for (const std::string& name : scene.samplers) perDraw.push_back("scene." + name);
+  const bool otherKind = input ? scene.values.count(semantic) > 0 ||
+                                     std::find(scene.samplers.begin(), scene.samplers.end(),
+                                               semantic) != scene.samplers.end()
+                               : scene.attributes.count(semantic) > 0;
+  const std::string where = fmt::format("{}:{}: ", manifest.path.string(), binding.line);
+  const std::vector<std::string>& takes = input ? perVertex : perDraw;
+  if (otherKind)
+    throw UsageError(fmt::format(
+        "{}{} `{}` is bound to scene.{}, which is {}; bind {}: {}", where,
+        input ? "input" : "uniform", binding.name, semantic,
+        input ? "one value for the whole draw (a uniform's)" : "per vertex (an input's)",
+        input ? "a per-vertex semantic" : "a value for the draw", fmt::join(takes, ", ")));
   throw UsageError(
-      fmt::format("{}:{}: `{}` is bound to scene.{}, which scene `{}` does not "
+      fmt::format("{}`{}` is bound to scene.{}, which scene `{}` does not "
                   "provide; it provides {}",
-                  manifest.path.string(), binding.line, binding.name, semantic, scene.name,
-                  fmt::format("{}", fmt::join(known, ", "))));
+                  where, binding.name, semantic, scene.name, fmt::join(takes, ", ")));
 }
 
 // GL's initial value of a uniform the manifest binds to "default": zero, of
@@ -118,7 +131,7 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
       out.uniforms[binding.name] = it->second;
     else if (std::find(scene.samplers.begin(), scene.samplers.end(), semantic) ==
              scene.samplers.end())
-      unknownSemantic(manifest, binding, scene, semantic);
+      unknownSemantic(manifest, binding, scene, semantic, false);
     // Samplers are bound by the pixel path; the vertex stage does not read them.
   }
   std::optional<std::vector<GlslDeclaration>> vertexDeclarations;  // read once, when needed
@@ -134,7 +147,7 @@ ResolvedBindings resolveBindings(const Manifest& manifest, const Scene& scene) {
                       manifest.path.string(), binding.line, binding.name));
     const std::string& semantic = std::get<std::string>(binding.source);
     auto it = scene.attributes.find(semantic);
-    if (it == scene.attributes.end()) unknownSemantic(manifest, binding, scene, semantic);
+    if (it == scene.attributes.end()) unknownSemantic(manifest, binding, scene, semantic, true);
     if (!vertexDeclarations)
       vertexDeclarations = readGlobalDeclarations(loadProgram(manifest).vertex);
     AttributeStream stream =

@@ -95,6 +95,13 @@ class ManifestReader {
     for (const std::string& name : names) {
       if (name == "derived") {
         m.derivedOracle = true;
+      } else if (nearestKey(name, {"derived"}) == "derived") {
+        // A hand-written oracle's name is checked where the oracles are
+        // known; a near miss of "derived" is said here, before a message
+        // about the name as a hand-written oracle's.
+        fail(m.oracleLine, fmt::format("`oracle` names '{}'; did you mean \"derived\" (the "
+                                       "oracle derived from the listing's own text)?",
+                                       name));
       } else if (m.oracle.empty()) {
         m.oracle = name;
       } else {

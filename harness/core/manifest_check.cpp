@@ -180,6 +180,19 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
       if (declared->type.rfind("sampler", 0) != 0)
         throw UsageError(fmt::format("{}:{}: `{}` is a {} but is bound to a texture", manifest,
                                      b.line, b.name, declared->type));
+      // The scene's textures by the kind each sampler takes: a cube map
+      // bound to a sampler2D was a Crash of every case, found by the
+      // driver. ("default", no texture, is for a scene that runs no
+      // fragment: the sweep's.)
+      const char* takes = declared->type == "samplerCube" ? "environment"
+                          : declared->type == "sampler2D" ? "decal"
+                                                          : nullptr;
+      if (const auto* semantic = std::get_if<std::string>(&b.source);
+          takes && !b.apiDefault && semantic && *semantic != takes)
+        throw UsageError(fmt::format(
+            "{}:{}: `{}` is a {} but is bound to scene.{}, the scene's {}; bind \"scene.{}\"",
+            manifest, b.line, b.name, declared->type, *semantic,
+            *semantic == "environment" ? "cube map" : "2D texture", takes));
       continue;
     }
     if (declared->type != glslTypeName(bound->second.type))

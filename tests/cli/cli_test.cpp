@@ -355,6 +355,27 @@ TEST(Cli, ListCheckRefusesACaseThatRunWouldRefuse) {
   fs::remove_all(dir);
 }
 
+// A samplerCube bound to the scene's 2D texture passed `list --check` and
+// then crashed every case in the driver. It is refused at its line.
+TEST(Cli, ASamplerBoundToTheWrongKindOfTextureIsRefusedAtItsLine) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-sampler-{}", ::getpid());
+  for (const auto& [binding, message] : std::vector<std::pair<std::string, std::string>>{
+           {"\"scene.decal\"",
+            "manifest.toml:28: `skybox` is a samplerCube but is bound to scene.decal, the "
+            "scene's 2D texture; bind \"scene.environment\""}}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy(SNELL_SOURCE_ROOT "/shaders/learnopengl/refraction", dir / "refraction",
+             fs::copy_options::recursive);
+    snell::edited::replaceInFile(dir / "refraction" / "manifest.toml", "\"scene.environment\"",
+                                 binding);
+    const Outcome checked = snell(fmt::format("list --check --shaders {}", dir.string()));
+    EXPECT_EQ(checked.code, 2) << checked.out;
+    EXPECT_NE(checked.out.find(message), std::string::npos) << checked.out;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(Cli, BrokenManifestIsExit2NamingTheFile) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-bad-{}", ::getpid());
   fs::create_directories(dir / "x");

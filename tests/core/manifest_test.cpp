@@ -125,6 +125,17 @@ TEST_F(ManifestTest, AManifestMayNameBothOracles) {
   EXPECT_EQ(handWritten.oracle, "orange_book_fresnel");
 }
 
+// `oracle = "derivd"` was taken for a hand-written oracle's name, and the
+// first message was about what that oracle mirrors: the near miss is said.
+TEST_F(ManifestTest, ANearMissOfDerivedIsSaid) {
+  for (const char* line :
+       {"oracle = \"derivd\"", "oracle = [\"orange_book_fresnel\", \"Derived\"]"}) {
+    const std::string message = errorOf(withOracleLine(line));
+    EXPECT_NE(message.find("did you mean \"derived\""), std::string::npos)
+        << line << ": " << message;
+  }
+}
+
 // The derived oracle follows the listing through both stages; a
 // hand-written one mirrors one stage, so both captures beside it are refused.
 TEST_F(ManifestTest, OnlyTheDerivedOracleAloneMayCaptureBothStages) {
@@ -203,6 +214,32 @@ TEST_F(ManifestTest, UnknownSemanticNamesTheLineAndTheScene) {
     EXPECT_NE(std::string(error.what()).find("manifest.toml:10:"), std::string::npos)
         << error.what();
     EXPECT_NE(std::string(error.what()).find("scene.nonsense"), std::string::npos);
+  }
+}
+
+// An input bound to a uniform's semantic (or a uniform to a per-vertex
+// one) was told the scene "does not provide" what the same message then
+// listed: it says which kind each takes.
+TEST_F(ManifestTest, ASemanticOfTheOtherKindIsNamedAsSuch) {
+  for (const auto& [from, to, expected] :
+       std::vector<std::tuple<std::string, std::string, std::string>>{
+           {"MCvertex = \"scene.position\"", "MCvertex = \"scene.modelview\"",
+            "input `MCvertex` is bound to scene.modelview, which is one value for the whole draw "
+            "(a uniform's); bind a per-vertex semantic: scene."},
+           {"M = \"scene.modelview\"", "M = \"scene.position\"",
+            "uniform `M` is bound to scene.position, which is per vertex (an input's); bind a "
+            "value for the draw: scene."}}) {
+    std::string text = kValid;
+    text.replace(text.find(from), from.size(), to);
+    const Manifest m = loadManifest(write(text));
+    try {
+      resolveBindings(m, makeScene("sphere"));
+      FAIL() << "no error for " << to;
+    } catch (const UsageError& error) {
+      EXPECT_NE(std::string(error.what()).find(expected), std::string::npos) << error.what();
+      EXPECT_EQ(std::string(error.what()).find("does not provide"), std::string::npos)
+          << error.what();
+    }
   }
 }
 
