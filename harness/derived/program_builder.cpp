@@ -383,7 +383,10 @@ std::string ProgramBuilder::located(const std::string& message, int line) const 
     quoted = first == std::string::npos ? "" : quoted.substr(first, last - first + 1);
     // A generated line can be a hundred kilobytes: the start says which.
     constexpr std::size_t kQuotedMax = 160;
-    if (quoted.size() > kQuotedMax) quoted = quoted.substr(0, kQuotedMax) + " ...";
+    if (quoted.size() > kQuotedMax) {
+      quoted.resize(kQuotedMax);
+      quoted += " ...";
+    }
   }
   if (quoted.empty()) return fmt::format("{}:{}: {}", program_.file, line, message);
   return fmt::format("{}:{}: {}: `{}`", program_.file, line, message, quoted);

@@ -188,6 +188,14 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
         read.data(), read.size() - (stopping && chunks.lastLineUnterminated() ? 1 : 0));
     if (text.empty()) break;
     const std::size_t first = chunks.firstLineNumber();
+    const auto parse = [&](Line& line, std::size_t k, bool driver) {
+      if (chunks.tooLong(k))
+        line.error =
+            fmt::format("longer than {} MiB, which no call needs; it was skipped to its end",
+                        LineChunks::kMaxLineBytes >> 20);
+      else
+        parseLine(line, text[k], driver);
+    };
     const std::size_t blockCount = (text.size() + kBlockLines - 1) / kBlockLines;
     blocks.resize(blockCount);
     for (BlockOutput& block : blocks) {
@@ -207,7 +215,7 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
         for (std::size_t k = begin; k < end; ++k) {
           Line line;
           line.number = first + k;
-          parseLine(line, text[k], false);
+          parse(line, k, false);
           std::optional<BuiltinResult> oracle;
           if (line.call) oracle = evaluateBuiltin(*line.call, rules);
           answerLine(line, oracle ? &*oracle : nullptr, false, rules, block);
@@ -219,7 +227,7 @@ EvalSummary evaluateLines(std::istream& in, std::ostream& out, Backend* backend,
       pool.run(text.size(), kBlockLines, [&](std::size_t begin, std::size_t end) {
         for (std::size_t k = begin; k < end; ++k) {
           lines[k].number = first + k;
-          parseLine(lines[k], text[k], true);
+          parse(lines[k], k, true);
         }
       });
       // The calling thread draws (a driver's context is bound to it) while

@@ -29,6 +29,7 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
   text_.erase(0, start_);
   start_ = 0;
   lines_.clear();
+  tooLong_.clear();
   lastUnterminated_ = false;
   // Offsets first: text_ may move while it grows.
   std::vector<std::pair<std::size_t, std::size_t>> spans;
@@ -42,6 +43,24 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
       continue;
     }
     scanned = text_.size();
+    if (text_.size() - start_ > kMaxLineBytes) {
+      // The line is dropped as it is read, up to its newline.
+      tooLong_.resize(spans.size() + 1);
+      tooLong_.back() = true;
+      spans.emplace_back(start_, 0);
+      for (;;) {
+        text_.resize(start_);
+        if (!fill()) break;
+        const void* newline = std::memchr(text_.data() + start_, '\n', text_.size() - start_);
+        if (!newline) continue;
+        text_.erase(start_,
+                    static_cast<std::size_t>(static_cast<const char*>(newline) - text_.data()) + 1 -
+                        start_);
+        break;
+      }
+      scanned = start_;
+      continue;
+    }
     if (fill()) continue;
     if (start_ < text_.size()) {  // a last line with no newline
       spans.emplace_back(start_, text_.size() - start_);

@@ -29,6 +29,13 @@ class LineChunks {
   // of the stream, or a read cut short (by a signal, say) inside a line.
   bool lastLineUnterminated() const { return lastUnterminated_; }
 
+  // A line longer than this is not kept (its view is empty, and
+  // tooLong(k) says so): one endless line would otherwise hold the whole
+  // input in memory, and a server's memory for any client.
+  static constexpr std::size_t kMaxLineBytes = std::size_t{16} << 20;
+  // Whether line k of the last chunk was longer than kMaxLineBytes.
+  bool tooLong(std::size_t k) const { return k < tooLong_.size() && tooLong_[k]; }
+
  private:
   bool fill();  // reads more text; false at the end of the stream
 
@@ -39,6 +46,7 @@ class LineChunks {
   bool lastUnterminated_ = false;
   int readError_ = 0;
   std::vector<std::string_view> lines_;
+  std::vector<bool> tooLong_;
   std::size_t first_ = 1, read_ = 0;
 };
 

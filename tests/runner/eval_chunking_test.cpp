@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -57,6 +58,29 @@ TEST(LineChunks, SplitsLongInputAcrossReads) {
   EXPECT_EQ(byChunks(text, 4096, &firsts), expected);
   EXPECT_EQ(firsts.size(), (expected.size() + 4095) / 4096);
   EXPECT_EQ(byChunks(text, 1 << 30), expected);
+}
+
+// A line past kMaxLineBytes is not kept: an endless line (eval /dev/zero)
+// held the whole input in memory until the allocator gave up, a server's
+// included. Its view is empty and tooLong() says so; the lines around it,
+// its number and the end of the input stay as they were.
+TEST(LineChunks, ALineTooLongIsDroppedToItsEndAndSaidSo) {
+  const std::string tooLong(LineChunks::kMaxLineBytes + (3 << 20) + 5, 'x');
+  for (const std::string& tail : {std::string("\nafter\n"), std::string()}) {
+    std::istringstream in("before\n" + tooLong + tail);
+    LineChunks chunks(in);
+    const std::vector<std::string_view> lines = chunks.next(10);
+    const std::vector<std::string_view> expected =
+        tail.empty() ? std::vector<std::string_view>{"before", ""}
+                     : std::vector<std::string_view>{"before", "", "after"};
+    EXPECT_EQ(lines, expected);
+    EXPECT_FALSE(chunks.tooLong(0));
+    EXPECT_TRUE(chunks.tooLong(1));
+    EXPECT_FALSE(chunks.tooLong(2));
+    EXPECT_TRUE(chunks.next(10).empty());
+  }
+  EXPECT_EQ(byChunks(std::string(LineChunks::kMaxLineBytes, 'y') + "\nz", 5).front().size(),
+            LineChunks::kMaxLineBytes);  // at the limit: kept
 }
 
 TEST(BlockPool, RunsEveryBlockOnceOnEveryThread) {
