@@ -225,10 +225,14 @@ bool EvalServer::answer(int fd, std::FILE* log, std::string& why) {
   }
   stopped = stopped || output.end() == SocketEnd::Stopped;
   const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
-  const char* lost = output.end() == SocketEnd::NotYet    ? ""
-                     : output.end() == SocketEnd::Stalled ? "; the client read nothing for a while "
-                                                            "and was let go before the end"
-                                                          : "; the client left before the end";
+  // A write stopped by the signal leaves no room for the reply's last line:
+  // the client sees the connection close, and the log says why.
+  const char* lost = output.end() == SocketEnd::NotYet ? ""
+                     : output.end() == SocketEnd::Stalled
+                         ? "; the client read nothing for a while and was let go before the end"
+                     : output.end() == SocketEnd::Stopped
+                         ? "; the answers stopped at the signal, while the client was still reading"
+                         : "; the client left before the end";
   if (!reply.error.empty())
     printMessage(log, "snell serve: a request failed after {:.3f} s: {}{}\n", seconds, reply.error,
                  lost);

@@ -369,6 +369,12 @@ TEST(EvalServerCli, SigtermWhileAClientReadsNoAnswersStopsTheServer) {
   ::kill(server.pid(), SIGTERM);
   EXPECT_EQ(server.exitWithin(std::chrono::seconds(4)), std::optional<int>(0)) << readText(log);
   asking.join();
+  // The client was still there: the log blamed it for leaving.
+  EXPECT_NE(readText(log).find("the answers stopped at the signal, while the client was still "
+                               "reading"),
+            std::string::npos)
+      << readText(log);
+  EXPECT_EQ(readText(log).find("the client left"), std::string::npos) << readText(log);
 }
 
 TEST(EvalServerCli, StopsWhenItsSocketIsRemoved) {
