@@ -397,7 +397,27 @@ bool clipSpacePositions(const Stage& vertex) {
   return true;
 }
 
-void casesSection(std::ostringstream& out, const Stage& vertex, bool hasFragment) {
+// Writes the cases; whether any compares an image.
+bool casesSection(std::ostringstream& out, const Stage& vertex,
+                  const std::optional<Stage>& fragment) {
+  const bool hasFragment = fragment.has_value();
+  // The image check's reference is the fragment stage evaluated by the
+  // derived oracle, which has no gl_FragCoord (a screen-space listing's
+  // pixel position): such a listing gets its vectors checked, and says why.
+  if (hasFragment && clipSpacePositions(vertex) &&
+      identifierUses(fragment->code, "gl_FragCoord") > 0) {
+    out << R"(
+# The vertex stage reads no matrix, so its positions are clip space: the
+# full-screen scene (one triangle over a 128 x 128 viewport) draws it. The
+# fragment stage reads gl_FragCoord, which the derived oracle's reference
+# image cannot follow: vectors only (an image case needs a hand-written
+# oracle's reference).
+[[case]]
+scene  = "fullscreen"
+checks = ["vectors"]
+)";
+    return false;
+  }
   if (hasFragment && clipSpacePositions(vertex)) {
     out << R"(
 # The vertex stage reads no matrix, so its positions are clip space: the
@@ -410,7 +430,7 @@ scene  = "fullscreen"
 checks = ["vectors", "image"]
 image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
 )";
-    return;
+    return true;
   }
   out << R"(
 # The vectors on the torus: concave regions, self-occlusion, inner silhouettes.
@@ -429,7 +449,7 @@ checks = ["vectors"]
 )";
     out << "\n# No fragment stage, so no image to compare; add one to `stages` for an image "
            "case.\n";
-    return;
+    return false;
   }
   out << R"(
 # Image tolerance (linear float, per channel), as derived for the catalog's
@@ -454,6 +474,7 @@ scene  = "stretched"
 checks = ["vectors", "image"]
 image  = { fail = 0.004, warn = 0.002, failpercent = 0.0, hardfail = 0.05 }
 )";
+  return true;
 }
 
 // A folder name as an id's name: what an id may not hold (a space, say)
@@ -522,11 +543,11 @@ Draft draftOf(const DraftRequest& request) {
   inputsSection(out, vertex);
   uniformsSection(out, vertex, fragment);
   captureSection(out, request, vertex, fragment);
-  casesSection(out, vertex, fragment.has_value());
-  // With a fragment stage the cases compare images (casesSection). The
-  // comments quote the shader's lines, which may be in another encoding
-  // (a Latin-1 comment): TOML must be UTF-8, so other bytes are spelled out.
-  return {utf8SpellingOutOthers(out.str()), fragment.has_value()};
+  const bool imageCases = casesSection(out, vertex, fragment);
+  // The comments quote the shader's lines, which may be in another
+  // encoding (a Latin-1 comment): TOML must be UTF-8, so other bytes are
+  // spelled out.
+  return {utf8SpellingOutOthers(out.str()), imageCases};
 }
 
 DraftWritten writeDraftManifest(const DraftRequest& request, bool force) {

@@ -167,6 +167,22 @@ TEST_F(ManifestDraft, LearnOpenGlRefractionBindsWithoutRenaming) {
   expectRunnable(m);
 }
 
+// A full-screen listing whose colour reads gl_FragCoord: the image case the
+// draft had was refused by run (the derived reference image has no
+// gl_FragCoord); the draft checks its vectors and says why.
+TEST_F(ManifestDraft, AScreenSpaceListingIsDraftedWithVectorsOnly) {
+  const fs::path listing = SNELL_SOURCE_ROOT "/shaders/shadertoy/lens";
+  fs::copy_file(listing / "lens.frag", dir_ / "lens.frag");
+  fs::copy_file(listing / "fullscreen.vert", dir_ / "fullscreen.vert");
+  const Draft draft = draftOf({dir_, "", "", ""});
+  EXPECT_FALSE(draft.imageCases);
+  EXPECT_NE(draft.text.find("reads gl_FragCoord"), std::string::npos) << draft.text;
+  const Manifest m = draftAndLoad();
+  ASSERT_EQ(m.cases.size(), 1u);
+  EXPECT_EQ(m.cases[0].scene, "fullscreen");
+  EXPECT_EQ(m.cases[0].checks, std::vector<std::string>{"vectors"});
+}
+
 // A file name that is not UTF-8, which a manifest's TOML cannot name, is
 // refused, naming the file.
 TEST_F(ManifestDraft, AFileNameThatIsNotUtf8IsRefused) {
