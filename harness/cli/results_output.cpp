@@ -47,7 +47,9 @@ void printCasesWithoutGoldens(const std::vector<CaseResult>& results) {
       return std::any_of(r.images.begin(), r.images.end(),
                          [&](const ImageComparison& c) { return c.against == kind; });
     };
-    if (against("reference") && !against("golden")) without.push_back(&r);
+    // A failed case is reported as failed; bless refuses its image anyway.
+    const bool passed = r.status == Status::Pass || r.status == Status::QualityWarning;
+    if (passed && against("reference") && !against("golden")) without.push_back(&r);
   }
   if (without.empty()) return;
   std::vector<std::string> named;
@@ -57,7 +59,8 @@ void printCasesWithoutGoldens(const std::vector<CaseResult>& results) {
     named.push_back(fmt::format("{} more", without.size() - named.size()));
   fmt::print(
       "\n{} image case(s) had no golden for their driver, so only the CPU reference gated "
-      "them: {}; `snell bless` with this run's --filter, --backend and --golden writes their "
+      "them: {}; `snell bless` with this run's --shaders, --filter, --backend and --golden writes "
+      "their "
       "goldens\n",
       without.size(), fmt::join(named, ", "));
 }

@@ -98,11 +98,22 @@ std::string tomlKey(const std::string& name) {
   return bare ? name : fmt::format("\"{}\"", name);
 }
 
+// A TOML basic string. A byte that starts no UTF-8 character (a folder
+// named in Latin-1) is written as the character of that code (\u00XX): TOML
+// has no escape for a raw byte.
 std::string tomlString(const std::string& text) {
   std::string out = "\"";
-  for (char c : text) {
+  for (std::size_t at = 0; at < text.size();) {
+    const char c = text[at];
+    const std::size_t length = utf8CharacterAt(text, at).length;
+    if (length == 0) {
+      out += fmt::format("\\u{:04X}", static_cast<unsigned char>(c));
+      ++at;
+      continue;
+    }
     if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    out.append(text, at, length);
+    at += length;
   }
   return out + "\"";
 }

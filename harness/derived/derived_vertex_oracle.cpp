@@ -3,6 +3,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/errors.h"
 #include "derived/evaluate.h"
 
 namespace snell::derived {
@@ -18,7 +19,15 @@ class DerivedVertexOracle final : public VertexOracle {
     if (testsVulkanMacro(source.text)) {
       LowerOptions vulkan;
       vulkan.vulkanMacros = true;
-      vulkanProgram_ = lower(vulkan);
+      // A Vulkan branch in Vulkan-only GLSL (constant_id, push constants)
+      // does not lower through the OpenGL front end: such a text is held
+      // against the OpenGL one on both APIs, as before, rather than
+      // stopping the run.
+      try {
+        vulkanProgram_ = lower(vulkan);
+      } catch (const UsageError&) {
+        vulkanProgram_.reset();
+      }
     }
   }
 

@@ -20,7 +20,10 @@ using nlohmann::json;
 // At most `limit` bytes of a value the line gave, for a message: a line of
 // megabytes is not echoed whole.
 std::string shortened(const std::string& text, std::size_t limit = 64) {
-  return text.size() <= limit ? text : text.substr(0, limit) + "...";
+  if (text.size() <= limit) return text;
+  // Not through a UTF-8 character: back to the start of the one cut.
+  while (limit > 0 && (static_cast<unsigned char>(text[limit]) & 0xC0) == 0x80) --limit;
+  return text.substr(0, limit) + "...";
 }
 
 // A number, or "nan", "inf" or "-inf" (JSON has none of them). A finite

@@ -38,7 +38,12 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
     const void* found = std::memchr(text_.data() + scanned, '\n', text_.size() - scanned);
     if (found) {
       const auto end = static_cast<std::size_t>(static_cast<const char*>(found) - text_.data());
-      spans.emplace_back(start_, end - start_);
+      const bool over = end - start_ > kMaxLineBytes;  // its newline came in the same read
+      if (over) {
+        tooLong_.resize(spans.size() + 1);
+        tooLong_.back() = true;
+      }
+      spans.emplace_back(start_, over ? 0 : end - start_);
       start_ = scanned = end + 1;
       continue;
     }

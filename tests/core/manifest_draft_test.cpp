@@ -167,6 +167,20 @@ TEST_F(ManifestDraft, LearnOpenGlRefractionBindsWithoutRenaming) {
   expectRunnable(m);
 }
 
+// A folder named in Latin-1 becomes the draft's title: written as the
+// character of that code, where a spelled-out \xNN was no TOML escape and
+// the draft could not be read.
+TEST_F(ManifestDraft, ATitleFromAFolderNamedInAnotherEncodingIsValidToml) {
+  const fs::path folder = dir_ / (std::string("caf") + "\xe9");
+  fs::create_directories(folder);
+  std::ofstream(folder / "refraction.vert") << kLearnOpenGlVertex;
+  std::string text = draftManifest({folder, "", "", "x/cafe"});
+  text = std::regex_replace(text, std::regex("source = .*"),
+                            "source = { file = \"https://example.org\", where = \"here\" }");
+  std::ofstream(folder / "manifest.toml") << text;
+  EXPECT_EQ(loadManifest(folder / "manifest.toml").title, "caf\u00e9");
+}
+
 // A full-screen listing whose colour reads gl_FragCoord: the image case the
 // draft had was refused by run (the derived reference image has no
 // gl_FragCoord); the draft checks its vectors and says why.

@@ -81,6 +81,12 @@ TEST(LineChunks, ALineTooLongIsDroppedToItsEndAndSaidSo) {
   }
   EXPECT_EQ(byChunks(std::string(LineChunks::kMaxLineBytes, 'y') + "\nz", 5).front().size(),
             LineChunks::kMaxLineBytes);  // at the limit: kept
+  // One byte over, its newline in the same read as its end.
+  std::istringstream in(std::string(LineChunks::kMaxLineBytes + 1, 'y') + "\nz\n");
+  LineChunks chunks(in);
+  EXPECT_EQ(chunks.next(5), (std::vector<std::string_view>{"", "z"}));
+  EXPECT_TRUE(chunks.tooLong(0));
+  EXPECT_FALSE(chunks.tooLong(1));
 }
 
 TEST(BlockPool, RunsEveryBlockOnceOnEveryThread) {

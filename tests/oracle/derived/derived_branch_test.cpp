@@ -71,6 +71,21 @@ void main() { y = SCALE * x; }
     EXPECT_LE(y[0].lo[0], expected);
     EXPECT_GE(y[0].hi[0], expected);
   }
+  // A Vulkan branch in Vulkan-only GLSL does not lower through the OpenGL
+  // front end: the text is held against its OpenGL reading on both APIs,
+  // as before, instead of stopping every run of the listing.
+  const auto vulkanOnly = derived::makeDerivedVertexOracle({"user.vert", R"(#version 450
+in float x;
+out float y;
+#ifdef VULKAN
+layout(constant_id = 0) const float SCALE = 3.0;
+#else
+const float SCALE = 2.0;
+#endif
+void main() { y = SCALE * x; }
+)"});
+  for (const PrecisionRules rules : {PrecisionRules::Glsl, PrecisionRules::Vulkan})
+    EXPECT_EQ(vulkanOnly->evaluate({uniforms, constants, inputs, 1, rules})[0].reference[0], 2.0);
 }
 
 // A for loop with a constant bound is unrolled; float(m) is its counter.
