@@ -174,18 +174,11 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
   // would have its images written over what they are compared with.
   for (const OutputPath& folder : folders) {
     const fs::path id = folderIdentity(folder.path);
-    // Inside it too: a run's own renders below --golden read as goldens.
-    const auto within = [&](const fs::path& outer) {
-      auto o = outer.begin();
-      for (auto p = id.begin(); o != outer.end(); ++o, ++p)
-        if (p == id.end() || *p != *o) return false;
-      return true;
-    };
     for (const OutputPath& input : inputs)
-      if (within(folderIdentity(input.path)))
+      if (folderIdentity(input.path) == id)
         throw UsageError(fmt::format(
-            "{} {} is also {}, or inside it: the command would write its images among the ones "
-            "it reads there; name another folder",
+            "{} {} is also {}: the command would write its images over the ones it reads "
+            "there; name another folder",
             folder.option, named(folder, id), input.option));
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
