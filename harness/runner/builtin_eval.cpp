@@ -18,6 +18,7 @@
 #include "runner/eval_answer_text.h"
 #include "runner/eval_line.h"
 #include "runner/eval_line_fast.h"
+#include "runner/json_fields.h"
 #include "runner/line_chunks.h"
 #include "runner/physics_eval_line.h"
 
@@ -47,16 +48,10 @@ struct BlockOutput {
   EvalSummary summary;
 };
 
-// An answer that quotes the input (a parse error's "last read") may hold
-// bytes that are not UTF-8: written as U+FFFD, not thrown.
-std::string dumpText(const json& answer) {
-  return answer.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
 // The same text with each byte that is not UTF-8 as U+FFFD, as the answer
-// writes it: the message on stderr then says what the answer says.
+// (jsonText) writes it: the message on stderr then says what the answer says.
 std::string validUtf8(const std::string& text) {
-  return json::parse(dumpText(text)).get<std::string>();
+  return json::parse(jsonText(text)).get<std::string>();
 }
 
 // Whether a parse error stopped at a bare NaN or Infinity (JavaScript's
@@ -121,7 +116,7 @@ void answerLine(const Line& line, const BuiltinResult* oracle, bool onDriver, Pr
     ++summary.answered;
     json out = {{"line", line.number}};
     out.update(*line.physics);
-    block.text.append(dumpText(out));
+    block.text.append(jsonText(out));
     block.text.push_back('\n');
     return;
   }
@@ -132,7 +127,7 @@ void answerLine(const Line& line, const BuiltinResult* oracle, bool onDriver, Pr
     }
     const json out = {{"line", line.number},
                       {"error", fmt::format("line {}: {}", line.number, line.error)}};
-    block.text.append(dumpText(out));
+    block.text.append(jsonText(out));
     block.text.push_back('\n');
     return;
   }
