@@ -12,16 +12,32 @@ LineChunks::LineChunks(std::istream& in) : in_(in) {}
 
 bool LineChunks::fill() {
   if (ended_) return false;
+  // Waits for the first byte (or the end), then takes only what is there
+  // without waiting: a read of a whole kReadBytes would wait on a pipe
+  // whose writer sent a line and waits for its answer.
+  errno = 0;
+  if (in_.peek() == std::istream::traits_type::eof()) {
+    // Taken at once: later calls may change errno.
+    if (in_.bad()) readError_ = errno != 0 ? errno : EIO;
+    ended_ = true;
+    return false;
+  }
   const std::size_t size = text_.size();
   text_.resize(size + kReadBytes);
-  errno = 0;
-  in_.read(text_.data() + size, static_cast<std::streamsize>(kReadBytes));
-  // Taken at once: later calls may change errno.
-  if (in_.bad()) readError_ = errno != 0 ? errno : EIO;
-  const auto got = static_cast<std::size_t>(in_.gcount());
+  std::size_t got = 0;
+  while (got < kReadBytes) {
+    const std::streamsize n =
+        in_.readsome(text_.data() + size + got, static_cast<std::streamsize>(kReadBytes - got));
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
   text_.resize(size + got);
-  if (got < kReadBytes) ended_ = true;
   return got > 0;
+}
+
+bool LineChunks::moreWithoutWaiting() const {
+  std::streambuf* buffer = in_.rdbuf();
+  return ended_ || !in_.good() || buffer == nullptr || buffer->in_avail() != 0;
 }
 
 const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
@@ -66,6 +82,9 @@ const std::vector<std::string_view>& LineChunks::next(std::size_t maxLines) {
       scanned = start_;
       continue;
     }
+    // Whole lines now rather than a full chunk later: a co-process waits
+    // for its answers before it writes more.
+    if (!spans.empty() && !moreWithoutWaiting()) break;
     if (fill()) continue;
     if (start_ < text_.size()) {  // a last line with no newline
       spans.emplace_back(start_, text_.size() - start_);

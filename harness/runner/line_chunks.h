@@ -14,8 +14,11 @@ class LineChunks {
  public:
   explicit LineChunks(std::istream& in);
 
-  // Up to `maxLines` further lines (fewer only at the end of the stream;
-  // none once it is done). The views stay valid until the next call.
+  // Up to `maxLines` further lines; fewer at the end of the stream, or
+  // when the stream has no more to give without waiting (a pipe whose
+  // writer waits for the answers to what it sent): the lines it has are
+  // returned then, and the line begun stays for the next call. None once
+  // the stream is done. The views stay valid until the next call.
   const std::vector<std::string_view>& next(std::size_t maxLines);
 
   // The number (from 1) of the first line of the last chunk.
@@ -38,6 +41,9 @@ class LineChunks {
 
  private:
   bool fill();  // reads more text; false at the end of the stream
+  // Whether reading on would not wait (the stream's buffer, or its
+  // showmanyc(), has more, or its end is known).
+  bool moreWithoutWaiting() const;
 
   std::istream& in_;
   std::string text_;       // this chunk's lines, then the start of the next

@@ -5,6 +5,8 @@
 
 #include <cerrno>
 
+#include "runner/ready_to_read.h"
+
 namespace snell {
 namespace {
 
@@ -46,6 +48,11 @@ SocketInput::int_type SocketInput::underflow() {
     setg(buffer_.data(), buffer_.data(), buffer_.data() + n);
     return traits_type::to_int_type(*gptr());
   }
+}
+
+std::streamsize SocketInput::showmanyc() {
+  // An input that has ended, or that a stop ends, reads at once.
+  return end_ != SocketEnd::NotYet || (stop_ && *stop_) || readsWithoutWaiting(fd_) ? 1 : 0;
 }
 
 SocketOutput::SocketOutput(int fd, const volatile std::sig_atomic_t* stop,

@@ -30,6 +30,8 @@ class SocketInput : public std::streambuf {
 
  protected:
   int_type underflow() override;
+  // 1 when a read would not wait (see runner/ready_to_read.h), else 0.
+  std::streamsize showmanyc() override;
 
  private:
   int fd_;

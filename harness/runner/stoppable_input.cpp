@@ -6,6 +6,8 @@
 
 #include <cerrno>
 
+#include "runner/ready_to_read.h"
+
 namespace snell {
 
 namespace {
@@ -63,6 +65,11 @@ StoppableInputBuffer::int_type StoppableInputBuffer::underflow() {
     error_ = errno;
     return traits_type::eof();
   }
+}
+
+std::streamsize StoppableInputBuffer::showmanyc() {
+  // Once stopped a read ends at once.
+  return (stop_ && *stop_ != 0) || readsWithoutWaiting(fd_) ? 1 : 0;
 }
 
 }  // namespace snell

@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/ioctl.h>
 #include <sys/wait.h>
@@ -171,6 +172,66 @@ TEST(EvalStreamCli, InterruptedEvalAnswersWholeLinesAndSaysWhereTheRestBegins) {
       << message;
   fs::remove(out);
   fs::remove(err);
+}
+
+// `snell eval` as a co-process: a tool writes one line, waits for its
+// answer, then writes the next. Each answer comes while the input is still
+// open (eval once held them until 1 MiB of input or its end, and both sides
+// waited on each other).
+TEST(EvalStreamCli, ACoProcessGetsEachAnswerBeforeItSendsTheNextLine) {
+  int input[2], output[2];
+  ASSERT_EQ(::pipe(input), 0);
+  ASSERT_EQ(::pipe(output), 0);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, input[0], 0);
+  posix_spawn_file_actions_adddup2(&actions, output[1], 1);
+  for (int fd : {input[0], input[1], output[0], output[1]})
+    posix_spawn_file_actions_addclose(&actions, fd);
+  std::string binary = SNELL_BINARY, eval = "eval", dash = "-";
+  std::vector<char*> argv = {binary.data(), eval.data(), dash.data(), nullptr};
+  pid_t pid = -1;
+  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  ::close(input[0]);
+  ::close(output[1]);
+  std::string answers;
+  const auto answerOf = [&](const std::string& line) -> std::string {
+    if (::write(input[1], line.data(), line.size()) != static_cast<ssize_t>(line.size())) return "";
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    for (;;) {
+      if (const auto newline = answers.find('\n'); newline != std::string::npos) {
+        std::string answer = answers.substr(0, newline);
+        answers.erase(0, newline + 1);
+        return answer;
+      }
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+          deadline - std::chrono::steady_clock::now());
+      pollfd ready{output[0], POLLIN, 0};
+      if (left.count() <= 0 || ::poll(&ready, 1, static_cast<int>(left.count())) <= 0) return "";
+      char buffer[4096];
+      const ssize_t got = ::read(output[0], buffer, sizeof buffer);
+      if (got <= 0) return "";
+      answers.append(buffer, static_cast<std::size_t>(got));
+    }
+  };
+  const std::string first = answerOf(R"({"fn":"reflect","I":[0.6,-0.8],"N":[0,1]})"
+                                     "\n");
+  ASSERT_FALSE(first.empty()) << "no answer to the first line while the input stays open";
+  EXPECT_EQ(jsonLines(first + "\n").at(0).at("line"), 1);
+  // The second line is sent in two writes: the part sent first is kept
+  // until its end comes.
+  ASSERT_EQ(::write(input[1], R"({"fn":"refract",)", 16), 16);
+  const std::string second = answerOf(R"("I":[0.6,-0.8],"N":[0,1],"eta":0.66})"
+                                      "\n");
+  ASSERT_FALSE(second.empty()) << "no answer to the second line while the input stays open";
+  EXPECT_EQ(jsonLines(second + "\n").at(0).at("line"), 2);
+  ::close(input[1]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ::close(output[0]);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 }  // namespace
