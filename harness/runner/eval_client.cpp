@@ -1,6 +1,7 @@
 #include "runner/eval_client.h"
 
 #include <fmt/format.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -63,6 +64,9 @@ class WholeLines {
     }
     out_.write(partial_.data(), static_cast<std::streamsize>(partial_.size()));
     out_.write(begin, last - begin);
+    // Passed on as they come: a co-process waits for its answers before
+    // it sends more.
+    out_.flush();
     partial_.assign(last, end);
   }
   // Text held back after the last whole line: at the server's trailer
@@ -77,7 +81,7 @@ class WholeLines {
 }  // namespace
 
 EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& backend, int input,
-                             std::ostream& out) {
+                             std::ostream& out, std::chrono::milliseconds silence) {
   UniqueFd connection = connectTo(socketPath);
   if (!connection) {
     const int error = errno;
@@ -136,10 +140,25 @@ EvalSummary evaluateOnServer(const std::string& socketPath, const std::string& b
   std::array<char, 1 << 16> buffer;
   WholeLines answers(out);
   std::optional<std::string> trailer;
+  auto heardAt = std::chrono::steady_clock::now();
   for (;;) {
-    const ssize_t n = ::recv(fd, buffer.data(), buffer.size(), 0);
+    const auto quiet = std::chrono::duration_cast<std::chrono::milliseconds>(
+        std::chrono::steady_clock::now() - heardAt);
+    pollfd ready{fd, POLLIN, 0};
+    const int polled =
+        quiet >= silence ? 0 : ::poll(&ready, 1, static_cast<int>((silence - quiet).count()));
+    if (polled < 0 && errno == EINTR) continue;
+    if (polled == 0) {
+      out.flush();
+      throw SetupError(fmt::format(
+          "{}: the server sent nothing for {} s: it is stopped (Ctrl-Z in its terminal; `kill "
+          "-CONT` it) or stuck; the answers written (whole lines only) cover part of the input",
+          socketPath, std::chrono::duration_cast<std::chrono::seconds>(silence).count()));
+    }
+    const ssize_t n = polled < 0 ? -1 : ::recv(fd, buffer.data(), buffer.size(), 0);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
+    heardAt = std::chrono::steady_clock::now();
     const char* begin = buffer.data();
     const char* end = begin + n;
     if (trailer) {
