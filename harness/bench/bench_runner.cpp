@@ -107,13 +107,19 @@ void checkOptions(const BenchOptions& options) {
 
 }  // namespace
 
-BenchResults runBench(const BenchOptions& options,
-                      const std::function<void(const std::string&)>& progress) {
+std::vector<Manifest> loadLadder(const BenchOptions& options) {
   checkOptions(options);
-  const std::vector<Manifest> methods = loadManifests(options.methodsDir);
+  std::vector<Manifest> methods = loadManifests(options.methodsDir);
   if (methods.empty())
     throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
                                  options.methodsDir.string()));
+  LadderReference::check(methods);
+  return methods;
+}
+
+BenchResults runBench(const BenchOptions& options,
+                      const std::function<void(const std::string&)>& progress) {
+  const std::vector<Manifest> methods = loadLadder(options);
   const Scene baseScene = makeScene(options.scene);
   const int errorSize = options.resolutions.back();
 

@@ -12,6 +12,7 @@
 
 #include "bench/bench_record.h"
 #include "bench/dispersion_reference_image.h"
+#include "core/manifest.h"
 
 namespace snell::bench {
 
@@ -37,6 +38,13 @@ struct BenchOptions {
 // on each backend, and the physics reference's.
 std::string benchImageName(const std::string& method, const std::string& backend);
 inline constexpr const char* kReferenceImageName = "physics_reference.exr";
+
+// The ladder's methods (options.methodsDir), with what runBench refuses
+// before it draws anything: its options, a manifest, a method the physics
+// reference cannot be chosen for. Throws UsageError naming the file. A
+// folder of ladders checks every ladder this way first, so that a later
+// ladder's mistake is not found after minutes of timing earlier ones.
+std::vector<Manifest> loadLadder(const BenchOptions& options);
 
 // Runs the measurement; `progress` gets one line per method and backend.
 // Throws UsageError for bad options or a listing that does not compile.

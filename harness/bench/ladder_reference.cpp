@@ -54,28 +54,25 @@ const physics::SellmeierGlass* manifestGlass(const Manifest& m) {
                   m.path.string()));
 }
 
-LadderReference::LadderReference(const std::vector<Manifest>& methods, const Scene& scene, int size,
-                                 int wavelengths) {
-  for (const Manifest& m : methods) {
-    dispersion_ = dispersion_ || namesSpectrum(m);
-    refraction_ = refraction_ || m.constants.count("InternalHits") > 0;
-  }
-  if (!dispersion_) {
-    model_ = refraction_ ? fmt::format("{} hits from inside: {}", kReferenceInternalHits,
-                                       kSphereTraceReferenceModel)
-                         : std::string(kFresnelReferenceModel);
-    for (const Manifest& m : methods) {
-      const double eta = etaOf(m);
-      if (images_.count(eta)) continue;
-      if (!(eta > 0.0 && eta < 1.0))
-        throw UsageError(fmt::format("{}:1: Eta {} is not n1/n2 from air into glass (0 < Eta < 1)",
-                                     m.path.string(), eta));
-      images_.emplace(eta, refraction_
-                               ? sphereTraceImage(scene, 1.0 / eta, kReferenceInternalHits, size)
-                               : fresnelReferenceImage(scene, eta, size, size));
-    }
-    return;
-  }
+namespace {
+
+bool namesAnySpectrum(const std::vector<Manifest>& methods) {
+  for (const Manifest& m : methods)
+    if (namesSpectrum(m)) return true;
+  return false;
+}
+
+// A method's Eta, which must be n1/n2 into glass.
+double checkedEta(const Manifest& m) {
+  const double eta = etaOf(m);
+  if (!(eta > 0.0 && eta < 1.0))
+    throw UsageError(fmt::format("{}:1: Eta {} is not n1/n2 from air into glass (0 < Eta < 1)",
+                                 m.path.string(), eta));
+  return eta;
+}
+
+// The one glass a dispersion ladder names.
+const physics::SellmeierGlass& ladderGlass(const std::vector<Manifest>& methods) {
   const physics::SellmeierGlass* glass = nullptr;
   const Manifest* namer = nullptr;
   for (const Manifest& m : methods) {
@@ -94,9 +91,41 @@ LadderReference::LadderReference(const std::vector<Manifest>& methods, const Sce
         "C1..C4 in `constants`); --methods takes a ladder of methods of one effect, as "
         "shaders/methods/fresnel, dispersion and refraction are",
         methods.front().path.parent_path().parent_path().string()));
+  return *glass;
+}
+
+}  // namespace
+
+void LadderReference::check(const std::vector<Manifest>& methods) {
+  if (namesAnySpectrum(methods)) {
+    (void)ladderGlass(methods);
+    return;
+  }
+  for (const Manifest& m : methods) (void)checkedEta(m);
+}
+
+LadderReference::LadderReference(const std::vector<Manifest>& methods, const Scene& scene, int size,
+                                 int wavelengths) {
+  dispersion_ = namesAnySpectrum(methods);
+  for (const Manifest& m : methods)
+    refraction_ = refraction_ || m.constants.count("InternalHits") > 0;
+  if (!dispersion_) {
+    model_ = refraction_ ? fmt::format("{} hits from inside: {}", kReferenceInternalHits,
+                                       kSphereTraceReferenceModel)
+                         : std::string(kFresnelReferenceModel);
+    for (const Manifest& m : methods) {
+      const double eta = checkedEta(m);
+      if (images_.count(eta)) continue;
+      images_.emplace(eta, refraction_
+                               ? sphereTraceImage(scene, 1.0 / eta, kReferenceInternalHits, size)
+                               : fresnelReferenceImage(scene, eta, size, size));
+    }
+    return;
+  }
+  const physics::SellmeierGlass& glass = ladderGlass(methods);
   model_ =
-      fmt::format("{}, {} wavelengths: {}", glass->name, wavelengths, kDispersionReferenceModel);
-  images_.emplace(0.0, dispersionReferenceImage(scene, *glass, wavelengths, size, size));
+      fmt::format("{}, {} wavelengths: {}", glass.name, wavelengths, kDispersionReferenceModel);
+  images_.emplace(0.0, dispersionReferenceImage(scene, glass, wavelengths, size, size));
 }
 
 const ReferenceImage& LadderReference::imageFor(const Manifest& method) const {

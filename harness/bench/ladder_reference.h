@@ -31,6 +31,9 @@ class LadderReference {
   // naming no glass, or two).
   LadderReference(const std::vector<Manifest>& methods, const Scene& scene, int size,
                   int wavelengths);
+  // What the constructor throws for these methods, without computing any
+  // image.
+  static void check(const std::vector<Manifest>& methods);
 
   const std::string& model() const { return model_; }
   const ReferenceImage& imageFor(const Manifest& method) const;

@@ -17,6 +17,7 @@
 #include "bench/ladder_checks.h"
 #include "bench/vertex_chart.h"
 #include "bench/wavelength_chart.h"
+#include "cli/backend_options.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
@@ -38,17 +39,37 @@ bool isLadder(const std::filesystem::path& dir) {
   return false;
 }
 
+// The names of the charts' data files (bench_chart.cpp, angle_chart.cpp,
+// vertex_chart.cpp, wavelength_chart.cpp): PREFIX<backend>....dat.
+bool isChartData(const std::string& name) {
+  if (!name.ends_with(".dat")) return false;
+  for (const char* prefix :
+       {"points_", "front_", "angle_", "vertices_", "spectral_", "per_channel_"})
+    if (name.starts_with(prefix)) return true;
+  return false;
+}
+
+// An image named as the bench names them (bench::benchImageName):
+// STEM.BACKEND.exr, BACKEND one of snell's.
+bool isBenchImage(const std::string& name) {
+  if (!name.ends_with(".exr")) return false;
+  const std::string stem = name.substr(0, name.size() - 4);
+  const std::size_t dot = stem.rfind('.');
+  return dot != std::string::npos && dot > 0 && unknownBackendReason(stem.substr(dot + 1)).empty();
+}
+
 // A ladder's folder is the bench's own: an earlier run's charts, their data
 // and its images of methods or backends this run did not measure would
 // stand beside the new bench.json and contradict it. Once the new results
-// are written, the chart data (*.dat, written whole by each chart), the
-// charts this run may not draw again, and the images it did not write go.
+// are written, the chart data (written whole by each chart), the charts
+// this run may not draw again, and the images it did not write go. Files
+// not named as the bench names its own stay.
 void removeEarlierOutputs(const bench::BenchResults& results, const std::filesystem::path& out) {
   namespace fs = std::filesystem;
   std::error_code error;
   std::vector<fs::path> stale;
   for (const fs::directory_entry& entry : fs::directory_iterator(out, error))
-    if (entry.path().extension() == ".dat" && entry.is_regular_file(error))
+    if (isChartData(entry.path().filename().string()) && entry.is_regular_file(error))
       stale.push_back(entry.path());
   for (const char* chart : {"vertices", "wavelengths"})
     for (const char* extension : {".svg", ".png"})
@@ -57,7 +78,8 @@ void removeEarlierOutputs(const bench::BenchResults& results, const std::filesys
   for (const bench::BenchRecord& r : results.records)
     images.insert(bench::benchImageName(r.method, r.backend));
   for (const fs::directory_entry& entry : fs::directory_iterator(out / "images", error))
-    if (entry.path().extension() == ".exr" && !images.count(entry.path().filename().string()))
+    if (const std::string name = entry.path().filename().string();
+        isBenchImage(name) && !images.count(name))
       stale.push_back(entry.path());
   for (const fs::path& path : stale) fs::remove(path, error);
 }
@@ -216,6 +238,20 @@ Command addBenchCommand(CLI::App& app) {
     if (ladders.empty())
       throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
                                    options->run.methodsDir.string()));
+    // Every ladder's manifests and output paths before any is timed: a
+    // file where a ladder's folder, images or bench.json go was found after
+    // its measurement, as an internal error.
+    std::vector<OutputPath> ladderFiles, ladderFolders;
+    for (const auto& [methods, dir] : ladders) {
+      bench::BenchOptions run = options->run;
+      run.methodsDir = methods;
+      (void)bench::loadLadder(run);
+      ladderFolders.push_back({"--out", dir});
+      ladderFolders.push_back({"--out", dir / "images"});
+      // (A folder still to be made holds no file yet.)
+      if (std::filesystem::is_directory(dir)) ladderFiles.push_back({"--out", dir / "bench.json"});
+    }
+    checkOutputs(ladderFiles, ladderFolders);
     std::string files;
     // Ctrl-C stops the bench before its next method (bench_runner.cpp).
     const InterruptFlag interrupt;

@@ -140,9 +140,62 @@ TEST(LadderBenchCli, AMethodThatDoesNotCompileStopsTheBenchBeforeAnyTiming) {
   fs::remove_all(dir);
 }
 
+// A folder of ladders whose later ladder has a method the physics
+// reference refuses is refused before the earlier ladder is timed: it was
+// found only after minutes of timing the ladders before it.
+TEST(LadderBenchCli, ALaterLaddersMistakeIsFoundBeforeAnyLadderIsTimed) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell_later_ladder.{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "ladders");
+  for (const char* name : {"a-fresnel", "b-fresnel"})
+    fs::copy(fs::path(SNELL_SOURCE_ROOT) / "shaders/methods/fresnel", dir / "ladders" / name,
+             fs::copy_options::recursive);
+  const fs::path wrong = dir / "ladders/b-fresnel/2-empirical/manifest.toml";
+  std::string manifest = readText(wrong);
+  const std::size_t eta = manifest.find("Eta = 0.6666667");
+  ASSERT_NE(eta, std::string::npos) << manifest;
+  std::ofstream(wrong) << manifest.replace(eta, 15, "Eta = 1.5");
+  const Outcome run = runSnell(
+      fmt::format("bench --methods {} --backends gl --resolutions 16 --tessellations 6 --repeats 1 "
+                  "--warmup 0 --no-ablation --out {}",
+                  (dir / "ladders").string(), (dir / "out").string()));
+  EXPECT_EQ(run.code, 2) << run.out;
+  EXPECT_NE(run.out.find(wrong.string() + ":1: Eta 1.5 is not n1/n2"), std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("ms per frame"), std::string::npos)
+      << "timed before refusing: " << run.out;
+  EXPECT_FALSE(fs::exists(dir / "out" / "a-fresnel" / "bench.json"));
+  fs::remove_all(dir);
+}
+
+// A file where a ladder's images or bench.json go was found after the
+// ladder's measurement, as an internal error.
+TEST(LadderBenchCli, AFileWhereALaddersOutputsGoIsRefusedBeforeAnyTiming) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell_bench_file.{}", getpid());
+  for (const char* blocked : {"images", "bench.json/"}) {
+    fs::remove_all(dir);
+    fs::create_directories(dir / "out");
+    if (std::string(blocked).ends_with("/"))
+      fs::create_directories(dir / "out" / blocked);  // a folder where the file goes
+    else
+      std::ofstream(dir / "out" / blocked) << "mine";
+    const Outcome run = runSnell(
+        fmt::format("bench --methods {}/shaders/methods/fresnel --backends gl --resolutions 16 "
+                    "--tessellations 6 --repeats 1 --warmup 0 --no-ablation --out {}",
+                    SNELL_SOURCE_ROOT, (dir / "out").string()));
+    EXPECT_EQ(run.code, 2) << blocked << ": " << run.out;
+    EXPECT_NE(run.out.find((dir / "out").string()), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("internal error"), std::string::npos) << run.out;
+    EXPECT_EQ(run.out.find("ms per frame"), std::string::npos)
+        << "timed before refusing: " << run.out;
+  }
+  fs::remove_all(dir);
+}
+
 // A bench into the folder of an earlier one left that one's gl images,
 // chart data and vertex chart beside a bench.json of vk alone: they are
-// replaced, and files the bench never writes are left.
+// replaced, and files the bench never writes are left (it removed every
+// *.dat and every image it had not written, a user's among them).
 TEST(LadderBenchCli, AnEarlierBenchsOutputsDoNotStayBesideANewOnesResults) {
   const fs::path out = fs::temp_directory_path() / fmt::format("snell_bench_again.{}", getpid());
   fs::remove_all(out);
@@ -155,7 +208,10 @@ TEST(LadderBenchCli, AnEarlierBenchsOutputsDoNotStayBesideANewOnesResults) {
   ASSERT_EQ(bench("gl,vk", "6,12").code, 0);
   ASSERT_TRUE(fs::exists(out / "vertices.png"));
   ASSERT_TRUE(fs::exists(out / "front_gl.dat"));
+  // Files of the user's, in names the bench does not write.
   std::ofstream(out / "notes.txt") << "mine";
+  std::ofstream(out / "measurements.dat") << "mine";
+  std::ofstream(out / "images" / "photo.exr") << "mine";
   ASSERT_EQ(bench("vk", "6").code, 0);
   EXPECT_FALSE(fs::exists(out / "vertices.png")) << "one tessellation draws no vertex chart";
   EXPECT_FALSE(fs::exists(out / "front_gl.dat"));
@@ -164,6 +220,8 @@ TEST(LadderBenchCli, AnEarlierBenchsOutputsDoNotStayBesideANewOnesResults) {
     EXPECT_EQ(entry.path().filename().string().find(".gl."), std::string::npos) << entry.path();
   EXPECT_TRUE(fs::exists(out / "images" / "physics_reference.exr"));
   EXPECT_TRUE(fs::exists(out / "notes.txt"));
+  EXPECT_TRUE(fs::exists(out / "measurements.dat"));
+  EXPECT_TRUE(fs::exists(out / "images" / "photo.exr"));
   fs::remove_all(out);
 }
 
