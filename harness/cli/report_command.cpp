@@ -90,6 +90,12 @@ Command addReportCommand(CLI::App& app) {
                    "snell: note: {} holds none of these runs' images, so the report shows no "
                    "picture or heat map; pass --images the run's --out folder\n",
                    options->images);
+    if (stats.otherRunsImages)
+      printMessage(stderr,
+                   "snell: note: {} holds another run's images of {} result(s) of the last run "
+                   "(their errors are not the ones it recorded), so the report does not show "
+                   "them; pass --images the last run's --out folder\n",
+                   options->images, stats.otherRunsImages);
     fmt::print(
         "{}/index.html: {} cases, {} histograms, {} heat maps, {} pictures, {:.1f} MB, "
         "{:.2f} s\n",

@@ -8,6 +8,26 @@
 #include <limits>
 
 namespace snell {
+namespace {
+
+double largestAt(const Image& observed, const Image& expected, int x, int y) {
+  double largest = 0;
+  for (int c = 0; c < 4; ++c)
+    largest = std::max(largest, double(std::abs(observed.at(x, y)[c] - expected.at(x, y)[c])));
+  return largest;
+}
+
+}  // namespace
+
+double largestDifference(const Image& observed, const Image& expected,
+                         const std::vector<bool>& masked) {
+  double largest = 0;
+  for (int y = 0; y < observed.height; ++y)
+    for (int x = 0; x < observed.width; ++x)
+      if (masked.empty() || !masked[static_cast<std::size_t>(y) * observed.width + x])
+        largest = std::max(largest, largestAt(observed, expected, x, y));
+  return largest;
+}
 
 std::filesystem::path addHeatMap(GnuplotBatch& batch, const std::string& title,
                                  const Image& observed, const Image& expected,
@@ -28,9 +48,7 @@ std::filesystem::path addHeatMap(GnuplotBatch& batch, const std::string& title,
         errors[p] = std::numeric_limits<float>::quiet_NaN();
         continue;
       }
-      double largest = 0;
-      for (int c = 0; c < 4; ++c)
-        largest = std::max(largest, double(std::abs(observed.at(x, y)[c] - expected.at(x, y)[c])));
+      const double largest = largestAt(observed, expected, x, y);
       summary.maxError = std::max(summary.maxError, largest);
       errors[p] = static_cast<float>(std::max(largest, floor));
       if (largest > failThreshold) {

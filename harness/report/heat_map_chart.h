@@ -19,6 +19,12 @@ struct HeatMapSummary {
   double maxError = 0;
 };
 
+// The largest channel difference over the pixels not masked: what the
+// heat map shows at its top, and what a run records as an image
+// comparison's max error.
+double largestDifference(const Image& observed, const Image& expected,
+                         const std::vector<bool>& masked);
+
 // Adds the plot to `batch` and returns the PNG it will write. `masked` is
 // empty or one flag per pixel (row 0 at the top).
 std::filesystem::path addHeatMap(GnuplotBatch& batch, const std::string& title,

@@ -14,6 +14,7 @@
 #include <optional>
 #include <set>
 
+#include "baseline/compare_runs.h"
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
@@ -101,21 +102,10 @@ class ReportBuilder {
     page.set("title", options_.title);
     page.set("generated", generatedAt());
     std::size_t count = 0;
-    std::map<std::string, std::size_t> tally;
-    for (const ReportRun& run : runs_)
-      for (const CaseResult& r : run.results) {
-        ++count;
-        ++tally[statusName(r.status)];
-      }
+    for (const ReportRun& run : runs_) count += run.results.size();
     page.set("result_count", std::to_string(count));
-    list tallyList;
-    for (const auto& [status, n] : tally) {
-      data t;
-      t.set("status", status);
-      t.set("count", std::to_string(n));
-      tallyList.push_back(t);
-    }
-    page.set("tally", tallyList);
+    page.set("tallies", tallies());
+    if (runs_.size() > 1) page.set("changes", changes());
     data incompleteRuns = data::type::list;
     for (const ReportRun& run : runs_)
       if (run.incomplete) incompleteRuns.push_back(data("label", run.label));
@@ -138,6 +128,13 @@ class ReportBuilder {
     list cases;
     for (CasePage& p : casePages_) cases.push_back(finish(p, stats));
     page.set("cases", cases);
+    // Said on the page too: a reader of the page never saw the command's
+    // stderr, and failing image cases with no picture looked complete.
+    if (hasImageCases() && stats.heatMaps == 0 && stats.pictures == 0)
+      page.set("images_missing",
+               fmt::format("No pictures or heat maps: {} (--images) holds none of these runs' "
+                           "images; a run writes them to its --out folder.",
+                           options_.imagesDir.string()));
     stats.cases = order.size();
     kainjow::mustache::mustache tmpl{std::string(kReportTemplate)};
     if (!tmpl.is_valid()) throw SetupError("report template: " + tmpl.error_message());
@@ -162,10 +159,80 @@ class ReportBuilder {
     return 0;
   }
 
+  // Whether the case fails in the latest run that has it: a case an
+  // earlier run failed and the last one passes is fixed, not failing.
   bool failing(const std::string& id) const {
+    std::size_t latest = 0;
+    for (const auto& [column, r] : byCase_.at(id)) latest = std::max(latest, columns_[column].run);
     for (const auto& [column, r] : byCase_.at(id))
-      if (isFailure(r->status)) return true;
+      if (columns_[column].run == latest && isFailure(r->status)) return true;
     return false;
+  }
+
+  // Each run's count of results by status (added across runs, they
+  // counted a case failed and then fixed as both).
+  list tallies() const {
+    list runs;
+    for (const ReportRun& run : runs_) {
+      std::map<std::string, std::size_t> counts;
+      for (const CaseResult& r : run.results) ++counts[statusName(r.status)];
+      list tally;
+      for (const auto& [status, n] : counts) {
+        data t;
+        t.set("status", status);
+        t.set("count", std::to_string(n));
+        tally.push_back(t);
+      }
+      data row;
+      if (runs_.size() > 1) row.set("label", run.label);
+      row.set("tally", tally);
+      runs.push_back(row);
+    }
+    return runs;
+  }
+
+  // From the first run to the last, as `snell compare` judges them:
+  // regressions, fixes, changes, new and removed results, and drift.
+  data changes() const {
+    const RunComparison c =
+        compareRuns({runs_.front().label, "", runs_.front().results},
+                    {runs_.back().label, "", runs_.back().results}, DriftRule{});
+    list rows;
+    const auto caseRow = [&](const std::string& kind, const std::string& key,
+                             const std::string& from, const std::string& to) {
+      // Keys are "BACKEND CASE".
+      const std::size_t space = key.find(' ');
+      const std::string id = space == std::string::npos ? key : key.substr(space + 1);
+      data row;
+      row.set("kind", kind);
+      row.set("backend", space == std::string::npos ? "" : key.substr(0, space));
+      row.set("id", id);
+      row.set("anchor", anchorOf(id));
+      row.set("from", from);
+      row.set("to", to);
+      rows.push_back(row);
+    };
+    for (const StatusChange& r : c.regressions)
+      caseRow("regression", r.key, statusName(r.from), statusName(r.to));
+    for (const StatusChange& f : c.fixes)
+      caseRow("fix", f.key, statusName(f.from), statusName(f.to));
+    for (const StatusChange& x : c.changes)
+      caseRow("change", x.key, statusName(x.from), statusName(x.to));
+    for (const std::string& key : c.added) caseRow("new", key, "", "");
+    for (const std::string& key : c.removed) caseRow("removed", key, "", "");
+    for (const Drift& d : c.drift)
+      caseRow("drift: " + d.metric, d.key, number(d.from), number(d.to));
+    data section;
+    section.set("from", c.from);
+    section.set("to", c.to);
+    section.set("counts",
+                fmt::format("{} regressions, {} fixes, {} changes, {} new, {} removed, {} "
+                            "drifted, {} unchanged",
+                            c.regressions.size(), c.fixes.size(), c.changes.size(), c.added.size(),
+                            c.removed.size(), c.drift.size(), c.unchanged));
+    section.set("rows", rows);
+    section.set("has_rows", !rows.empty());
+    return section;
   }
 
   static std::string generatedAt() {
@@ -319,6 +386,13 @@ class ReportBuilder {
     return rows;
   }
 
+  bool hasImageCases() const {
+    for (const ReportRun& run : runs_)
+      for (const CaseResult& r : run.results)
+        if (!r.images.empty()) return true;
+    return false;
+  }
+
   double failThreshold(const std::string& id) const {
     const auto it = catalog_.find(id);
     return it != catalog_.end() && it->second->spec.image.fail > 0 ? it->second->spec.image.fail
@@ -338,6 +412,28 @@ class ReportBuilder {
     return it->second ? &*it->second : nullptr;
   }
 
+  // Why the images of `r`'s backend in --images are another run's (empty
+  // when they are its own, or cannot be told): their largest difference
+  // from the reference beside them is not the one `r` recorded. A stale
+  // folder otherwise put a passing run's pictures under a failing run's
+  // numbers, with captions that contradicted them.
+  std::string anotherRunsImages(const CaseResult& r, const Image* rendered, const Image* reference,
+                                const std::vector<bool>& masked) const {
+    if (!rendered || !reference || !sameSize(*rendered, *reference)) return "";
+    for (const ImageComparison& c : r.images) {
+      if (c.against != "reference" || !c.problem.empty()) continue;
+      const double there = largestDifference(*rendered, *reference, masked);
+      // The same images give the same number, up to the float rounding of
+      // the comparison library's own difference.
+      if (std::abs(there - c.maxError) <= 1e-4 * std::max(there, c.maxError) + 1e-7) return "";
+      return fmt::format(
+          "No pictures: the {} image in {} is another run's. Its largest difference from the "
+          "reference there is {:.3g}; this run recorded {:.3g}. Pass --images this run's --out.",
+          r.backend, options_.imagesDir.string(), there, c.maxError);
+    }
+    return "";
+  }
+
   CasePage casePage(const std::string& id, ReportStats& stats) {
     CasePage page;
     page.fields.set("id", id);
@@ -351,6 +447,7 @@ class ReportBuilder {
     const double fail = failThreshold(id);
     const Image* reference = image(dir / "reference.exr");
     bool referenceShown = false;
+    std::set<std::string> notThisRuns;  // backends whose images there are another run's
     for (const auto& [column, r] : byCase_.at(id)) {
       ResultPage rp;
       rp.fields.set("column", columns_[column].name);
@@ -410,8 +507,16 @@ class ReportBuilder {
       }
       const std::string& backend = columns_[column].backend;
       // Images on disk belong to the last run that wrote the folder: shown
-      // for the last run only.
-      if (columns_[column].run + 1 == runs_.size()) {
+      // for the last run only, and only when they are that run's.
+      const std::string otherRuns =
+          columns_[column].run + 1 == runs_.size()
+              ? anotherRunsImages(*r, image(dir / (backend + ".exr")), reference, masked)
+              : "";
+      if (!otherRuns.empty()) {
+        rp.fields.set("images_note", otherRuns);
+        notThisRuns.insert(backend);
+        ++stats.otherRunsImages;
+      } else if (columns_[column].run + 1 == runs_.size()) {
         if (!referenceShown && fs::exists(dir / "reference.png")) {
           rp.pictures.push_back({"CPU reference", "picture", dir / "reference.png", "image/png"});
           referenceShown = true;
@@ -441,6 +546,7 @@ class ReportBuilder {
     std::map<std::string, bool> withinSpec;
     for (const auto& [column, r] : byCase_.at(id))
       if (columns_[column].run + 1 == runs_.size() &&
+          !notThisRuns.count(columns_[column].backend) &&
           image(dir / (columns_[column].backend + ".exr"))) {
         rendered.push_back(columns_[column].backend);
         withinSpec[columns_[column].backend] = renderedWithinSpec(r->status);

@@ -36,6 +36,9 @@ struct ReportOptions {
 
 struct ReportStats {
   std::size_t cases = 0, histograms = 0, heatMaps = 0, pictures = 0;
+  // Results of the last run whose images in --images are another run's
+  // (and so are not shown).
+  std::size_t otherRunsImages = 0;
   std::size_t bytes = 0;
 };
 

@@ -53,7 +53,11 @@ void printRunTiming(std::ostream& out, const RunTiming& timing) {
     // be kept (which the run said when it started).
     fmt::print(out, "oracle results: {} computed, none kept (no oracle cache this run)\n", results);
   else
-    fmt::print(out, "oracle results: {} computed, {} read from {} (computed by an earlier run)\n",
+    // Read ones were computed by an earlier run, or by this one for
+    // another backend under the same rules: the store cannot tell which.
+    fmt::print(out,
+               "oracle results: {} computed, {} read from {} (computed earlier: by an earlier "
+               "run, or by this run for another backend)\n",
                results - stored, stored, timing.oracleStore);
   fmt::print(out,
              "wall {:.2f} s with {} worker{} (the phases are worker seconds); images across APIs "

@@ -133,6 +133,106 @@ TEST(HtmlReport, AnInterruptedRunIsSaidAtTheTopOfThePage) {
   fs::remove_all(dir);
 }
 
+// A report of a failing run given the images of an earlier, passing one
+// (a stale --images folder) put the passing run's pictures under the
+// failing run's numbers, with heat-map captions that contradicted them.
+// The images are not shown when their error against the reference is not
+// the one the run recorded, and the page says why.
+TEST(HtmlReport, AnotherRunsImagesAreNotShownUnderThisRunsNumbers) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-other-{}", getpid());
+  fs::remove_all(dir);
+  writeImages(dir / "images" / kCase);  // gl's image: 13 pixels off by 0.02
+  const auto reportOf = [&](const nlohmann::json& gl) {
+    std::ofstream(dir / "results.jsonl") << gl.dump() << "\n";
+    const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                                               (dir / "results.jsonl").string(),
+                                               (dir / "html").string(), (dir / "images").string()));
+    EXPECT_EQ(code, 0) << out;
+    return std::pair(out, readText(dir / "html" / "index.html"));
+  };
+  // This run's own numbers: max error 0.02, its images shown.
+  const auto [ownOut, own] = reportOf(record("gl", "Fail", 13));
+  EXPECT_NE(own.find("gl against the reference: 13 pixels over 0.004"), std::string::npos);
+  EXPECT_EQ(own.find("is another run&apos;s"), std::string::npos);
+  EXPECT_EQ(ownOut.find("another run"), std::string::npos) << ownOut;
+  // A run whose gl image was within 0.0005 of the reference: not these.
+  const auto [otherOut, other] = reportOf(record("gl", "Pass", 0));
+  EXPECT_EQ(other.find("gl against the reference:"), std::string::npos);
+  EXPECT_EQ(other.find("gl rendered"), std::string::npos);
+  EXPECT_NE(other.find("No pictures: the gl image in " + (dir / "images").string() +
+                       " is another run&apos;s. Its largest difference from the reference there "
+                       "is 0.02; this run recorded 0.0005."),
+            std::string::npos)
+      << other.substr(other.find("<h2 id=\"cases\">"));
+  EXPECT_NE(otherOut.find("holds another run's images of 1 result(s) of the last run"),
+            std::string::npos)
+      << otherOut;
+  fs::remove_all(dir);
+}
+
+// A report whose --images holds none of its runs' images said so on stderr
+// alone: the page, read later and elsewhere, showed failing image cases
+// with no picture as if that were all.
+TEST(HtmlReport, AFolderWithoutTheRunsImagesIsSaidOnThePage) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-none-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "images");
+  std::ofstream(dir / "results.jsonl") << record("gl", "Fail", 13).dump() << "\n";
+  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                                             (dir / "results.jsonl").string(),
+                                             (dir / "html").string(), (dir / "images").string()));
+  ASSERT_EQ(code, 0) << out;
+  EXPECT_NE(readText(dir / "html" / "index.html")
+                .find("No pictures or heat maps: " + (dir / "images").string() +
+                      " (--images) holds none of these runs&apos; images"),
+            std::string::npos);
+  // With the images there, no such line.
+  writeImages(dir / "images" / kCase);
+  ASSERT_EQ(shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                              (dir / "results.jsonl").string(), (dir / "html").string(),
+                              (dir / "images").string()))
+                .first,
+            0);
+  EXPECT_EQ(readText(dir / "html" / "index.html").find("No pictures or heat maps"),
+            std::string::npos);
+  fs::remove_all(dir);
+}
+
+// A report of two runs showed neither regressions nor fixes: every case
+// that failed in either run had the failing border and came first, and the
+// tally added both runs' counts. The page now says what changed from the
+// first run to the last, as `snell compare` does, counts each run apart,
+// and marks a case by the last run.
+TEST(HtmlReport, TwoRunsShowTheirRegressionsAndFixes) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-two-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "images");
+  std::ofstream(dir / "passing.jsonl") << record("gl", "Pass", 0).dump() << "\n";
+  std::ofstream(dir / "failing.jsonl") << record("gl", "Fail", 13).dump() << "\n";
+  const auto reportOf = [&](const char* first, const char* second) {
+    const auto [code, out] = shell(fmt::format("{} report {} {} -o {} --images {}", SNELL_BINARY,
+                                               (dir / first).string(), (dir / second).string(),
+                                               (dir / "html").string(), (dir / "images").string()));
+    EXPECT_EQ(code, 0) << out;
+    return readText(dir / "html" / "index.html");
+  };
+  const std::string row = fmt::format(
+      "<td>gl</td><td><a href=\"#case-orange-book-14-1-fresnel-sphere\">{}</a></td>", kCase);
+  const std::string regressed = reportOf("passing.jsonl", "failing.jsonl");
+  EXPECT_NE(regressed.find("1 regressions, 0 fixes"), std::string::npos);
+  EXPECT_NE(regressed.find("<td>regression</td>" + row), std::string::npos) << regressed;
+  EXPECT_NE(regressed.find("<div class=\"case failing\""), std::string::npos);
+  const std::string passingLabel =
+      "<b>" + (dir / "passing.jsonl").string() + "</b>: <span class=\"Pass\">1 Pass</span>";
+  EXPECT_NE(regressed.find(passingLabel), std::string::npos) << regressed.substr(0, 4000);
+  const std::string fixed = reportOf("failing.jsonl", "passing.jsonl");
+  EXPECT_NE(fixed.find("0 regressions, 1 fixes"), std::string::npos);
+  EXPECT_NE(fixed.find("<td>fix</td>" + row), std::string::npos) << fixed;
+  EXPECT_EQ(fixed.find("<div class=\"case failing\""), std::string::npos)
+      << "fixed in the last run, yet marked failing";
+  fs::remove_all(dir);
+}
+
 TEST(HtmlReport, RendersInHeadlessChromiumWithEveryImageEmbedded) {
   const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-test-{}", getpid());
   fs::remove_all(dir);
