@@ -26,7 +26,10 @@ struct Golden {
 
 // Whether any case has a golden under `backend` (a backend's golden key): a
 // driver with none yet starts from "no golden yet", not from failures.
-bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend);
+// `skip` (a run's --out, which may lie inside the golden folder) is not
+// searched: the renders there are named as goldens are.
+bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend,
+                  const std::filesystem::path& skip = {});
 
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
 // truncated, wrong size) and what to do: check it, or run `blessCommand`

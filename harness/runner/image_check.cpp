@@ -126,7 +126,7 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
                     reference.mask, c.spec.image.fail);
 
   const std::string goldenKey = options.goldenKey.empty() ? name : options.goldenKey;
-  if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey)) {
+  if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey, options.outDir)) {
     check.goldenNote = fmt::format(
         "no golden yet for this driver (key `{}`): the CPU reference gates it; `{}` writes its "
         "goldens",

@@ -26,6 +26,7 @@ namespace snell {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::readText;
 
 const std::string kCase = "orange-book/14.1-fresnel/sphere";
 
@@ -322,6 +323,29 @@ TEST_F(GoldenCli, ImageCasesWithoutAGoldenAreSaidInTheSummary) {
                         kCase + " on gl"),
             std::string::npos)
       << output;
+}
+
+// A run's --out inside its --golden folder: the renders of the run before
+// (OUT/CASE/gl.png) read as goldens of the driver, and the next run
+// reported every image case's golden as missing, where the folder has none.
+TEST_F(GoldenCli, RendersOfAnEarlierRunInsideTheGoldenFolderAreNotGoldens) {
+  const fs::path golden = dir_ / "golden-with-out";
+  fs::create_directories(golden);
+  const fs::path log = dir_ / "log-inside.txt";
+  const auto run = [&] {
+    const int status = std::system(
+        fmt::format("{} run --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} "
+                    ">{} 2>&1",
+                    SNELL_BINARY, kCase, (dir_ / "shaders").string(), golden.string(),
+                    (golden / "out").string(), log.string())
+            .c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  EXPECT_EQ(run(), 0);
+  ASSERT_TRUE(fs::exists(golden / "out" / kCase / "gl.png"));
+  EXPECT_EQ(run(), 0) << readText(log);
+  EXPECT_NE(readText(log).find("1 image case(s) had no golden for their driver"), std::string::npos)
+      << readText(log);
 }
 
 }  // namespace
