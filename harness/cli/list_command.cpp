@@ -5,6 +5,7 @@
 
 #include "cli/case_filter.h"
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "core/case.h"
 #include "core/errors.h"
 #include "core/status.h"
@@ -25,7 +26,8 @@ Command addListCommand(CLI::App& app) {
   list->add_option("--shaders", options->shaders, "Folder of listings")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();
-  list->add_option("--filter", options->filter, "Only cases whose id matches this glob");
+  list->add_option("--filter", options->filter, "Only cases whose id matches this glob")
+      ->check(nonEmptyGlob());
   // Listing reads the manifests only; the deeper checks (the scenes built,
   // the listings parsed for the derived oracle) are `run`'s first step, and
   // cost a listing ten times its own time.

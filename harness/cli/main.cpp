@@ -1,8 +1,11 @@
 // snell: a conformance suite and CI gate for reflection and refraction shaders.
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <iostream>
 #include <map>
 #include <string>
 
@@ -10,6 +13,25 @@
 #include "core/errors.h"
 #include "core/heap_reuse.h"
 #include "core/message.h"
+
+namespace {
+
+// What a command wrote to standard output reached it: a full disk or a
+// failed pipe is exit 2 with a message, never a silent success (`compare
+// --json > /dev/full` exited 0).
+int withOutputWritten(int code) {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  const int error = errno;
+  if (flushed && !std::ferror(stdout) && std::cout.good()) return code;
+  snell::printMessage(stderr,
+                      "snell: cannot write to standard output{}; what it holds is cut short\n",
+                      error != 0 ? fmt::format(" ({})", std::strerror(error)) : "");
+  return 2;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   snell::keepFreedMemoryForReuse();
@@ -60,14 +82,14 @@ int main(int argc, char** argv) {
     }
     if (version) {
       fmt::print("snell {}\n", SNELL_VERSION);
-      return drivers ? snell::cli::printBackendDrivers({}) : 0;
+      return withOutputWritten(drivers ? snell::cli::printBackendDrivers({}) : 0);
     }
     if (app.get_subcommands().empty()) {
       snell::printMessage(stderr, "snell: name a command (snell --help lists them)\n");
       return 2;
     }
     for (const auto& [sub, run] : commands)
-      if (sub->parsed()) return run();
+      if (sub->parsed()) return withOutputWritten(run());
   } catch (const snell::Interrupted& stopped) {
     snell::printMessage(stderr, "snell: {}\n", stopped.what());
     return 128 + stopped.signal;
@@ -78,6 +100,8 @@ int main(int argc, char** argv) {
     snell::printMessage(stderr, "snell: set-up error: {}\n", error.what());
     return 2;
   } catch (const std::exception& error) {
+    // fmt::print throws when standard output takes no more.
+    if (std::ferror(stdout)) return withOutputWritten(2);
     snell::printMessage(stderr, "snell: internal error: {}\n", error.what());
     return 2;
   }

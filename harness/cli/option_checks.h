@@ -27,6 +27,17 @@ inline CLI::Validator nonEmptyPath() {
       "");
 }
 
+// A glob given empty (an unset shell variable) matched every case.
+inline CLI::Validator nonEmptyGlob() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        return text.empty() ? "an empty glob; give one ('*' matches every case), or leave the "
+                              "option out"
+                            : "";
+      },
+      "");
+}
+
 // A count of whole units (seconds, repeats): CLI11 turns "1.5" for an
 // unsigned option into "Value 1.5 not in range", which hides the reason.
 inline CLI::Validator wholeNumber() {

@@ -36,10 +36,42 @@ fs::file_type typeOf(const OutputPath& output, const fs::path& path) {
   return status.type();
 }
 
+const char* notAFileKind(fs::file_type type) {
+  switch (type) {
+    case fs::file_type::character:
+      return "a character device";
+    case fs::file_type::block:
+      return "a block device";
+    case fs::file_type::fifo:
+      return "a named pipe";
+    case fs::file_type::socket:
+      return "a socket";
+    default:
+      return "not a plain file";
+  }
+}
+
 void checkFile(const OutputPath& file) {
   if (typeOf(file, file.path) == fs::file_type::directory)
     throw UsageError(
         fmt::format("{} {}: is a folder; name a file to write", file.option, file.path.string()));
+  // A file is written beside its path and renamed onto it (a reader never
+  // sees half of one): that would replace a link itself, not what it
+  // leads to, and a device or a pipe (/dev/null, as root) with a plain file.
+  std::error_code kindError;
+  const fs::file_status own = fs::symlink_status(file.path, kindError);
+  if (!kindError && fs::is_symlink(own)) {
+    const fs::path target = fs::read_symlink(file.path, kindError);
+    throw UsageError(fmt::format(
+        "{} {}: is a link{}; name the file itself (snell writes a new file and renames it into "
+        "place, which would replace the link)",
+        file.option, file.path.string(), kindError ? "" : fmt::format(" to {}", target.string())));
+  }
+  if (!kindError && fs::exists(own) && !fs::is_regular_file(own))
+    throw UsageError(fmt::format(
+        "{} {}: is {}, not a file; name a file (snell writes a new file and renames it into "
+        "place), or leave the option out",
+        file.option, file.path.string(), notAFileKind(own.type())));
   const fs::path folder = fs::absolute(file.path).parent_path();
   const fs::file_type folderType = typeOf(file, folder);
   if (folderType == fs::file_type::not_found)

@@ -1,6 +1,7 @@
 #include <chrono>
 
 #include "cli/commands.h"
+#include "cli/option_checks.h"
 #include "cli/output_paths.h"
 #include "cli/results_output.h"
 #include "cli/suite_session.h"
@@ -13,10 +14,11 @@ Command addRunCommand(CLI::App& app) {
   auto junit = std::make_shared<std::string>();
   addSuiteOptions(*sub, *options);
   options->reruns = 1;
-  sub->add_option("--junit", *junit, "Write results as JUnit XML");
+  sub->add_option("--junit", *junit, "Write results as JUnit XML")->check(nonEmptyPath());
   sub->add_option("--expectations", options->expectations,
                   "Known failures, flakes and skips: a folder of BACKEND-fails.txt, "
-                  "-flakes.txt, -skips.txt, or one PREFIX-fails.txt (its siblings are read too)");
+                  "-flakes.txt, -skips.txt, or one PREFIX-fails.txt (its siblings are read too)")
+      ->check(nonEmptyPath());
   sub->add_option("--reruns", options->reruns,
                   "Times an unexpected failure is run again; one that passes is a Flake")
       ->check(CLI::Range(0, 100))
@@ -40,7 +42,9 @@ Command addRunCommand(CLI::App& app) {
     std::vector<OutputPath> files;
     if (!options->json.empty()) files = resultsFileOutputs("--json", options->json);
     if (!junit->empty()) files.push_back({"--junit", *junit});
-    checkOutputs(files, {{"--out", options->out}}, {{"--golden", options->golden}});
+    std::vector<OutputPath> inputs = {{"--golden", options->golden}};
+    if (!options->expectations.empty()) inputs.push_back({"--expectations", options->expectations});
+    checkOutputs(files, {{"--out", options->out}}, inputs);
     const SuiteRun suite = runSuite(*options, false, true);
     return reportResults(
         suite.results, suite.expectations, suite.skipped,

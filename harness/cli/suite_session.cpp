@@ -193,7 +193,8 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
   options.shaders = defaultShadersDir();
   options.golden = defaultGoldenDir();
   addBackendOptions(sub, options.backend, options.device, options.glProvider);
-  sub.add_option("--filter", options.filter, "Only cases whose id matches this glob");
+  sub.add_option("--filter", options.filter, "Only cases whose id matches this glob")
+      ->check(nonEmptyGlob());
   sub.add_option("--shaders", options.shaders, "Folder of listings")
       ->check(CLI::ExistingDirectory)
       ->capture_default_str();

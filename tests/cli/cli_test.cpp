@@ -2,12 +2,14 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <sys/mount.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -140,6 +142,65 @@ TEST(Cli, AFullDiskLeavesNoTemporaryFiles) {
   EXPECT_EQ(temporaries(), std::vector<std::string>{}) << results.out;
   ::umount(dir.c_str());
   fs::remove_all(dir);
+}
+
+// An output path that is a link, a device or a pipe was replaced by a plain
+// file (the file is written beside it and renamed onto it): a link to the
+// results lost its link, and as root --junit /dev/null replaced the device.
+// An empty --junit wrote nothing, with exit 0; an empty --filter ran every
+// case; --json onto the --expectations file overwrote it. Each is refused
+// before any case runs.
+TEST(Cli, OutputsThatAreNotPlainFilesOrAreInputsAreRefusedBeforeTheRun) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-cli-kinds-{}", ::getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "target.xml") << "kept\n";
+  fs::create_symlink(dir / "target.xml", dir / "link.xml");
+  ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+  std::ofstream(dir / "gl-fails.txt") << "# none\n";
+  const std::string run = "run --filter 'orange-book/14.1-fresnel/sweep' --backend gl";
+  const std::string d = dir.string();
+  for (const auto& [args, expected] : std::vector<std::pair<std::string, std::string>>{
+           {fmt::format("--junit {}/link.xml", d),
+            fmt::format("--junit {0}/link.xml: is a link to {0}/target.xml; name the file itself",
+                        d)},
+           {fmt::format("--json {}/pipe", d),
+            fmt::format("--json {}/pipe: is a named pipe, not a file", d)},
+           {"--junit /dev/null", "--junit /dev/null: is a character device, not a file"},
+           {"--junit ''", "--junit: an empty path"},
+           {"--expectations ''", "--expectations: an empty path"},
+           {"--filter ''", "--filter: an empty glob"},
+           {fmt::format("--expectations {0}/gl-fails.txt --json {0}/gl-fails.txt", d),
+            "--expectations"}}) {
+    const Outcome o = snell(run + " " + args);
+    EXPECT_EQ(o.code, 2) << args << ": " << o.out;
+    EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
+    EXPECT_EQ(o.out.find("[1/1]"), std::string::npos) << args << ": the case ran\n" << o.out;
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "link.xml"));
+  EXPECT_EQ(fs::status(dir / "pipe").type(), fs::file_type::fifo);
+  EXPECT_EQ(fs::status("/dev/null").type(), fs::file_type::character);
+  std::stringstream expectations;
+  expectations << std::ifstream(dir / "gl-fails.txt").rdbuf();
+  EXPECT_EQ(expectations.str(), "# none\n");
+  fs::remove_all(dir);
+}
+
+// Standard output on a full disk: `compare --json`, `devices` and the
+// others exited 0 with nothing said, and `list` said "internal error".
+TEST(Cli, StandardOutputThatCannotBeWrittenIsExit2WithAMessage) {
+  const fs::path err = fs::temp_directory_path() / fmt::format("snell-cli-full-{}", ::getpid());
+  for (const std::string args : {"list", "--version", "list --filter '*14.1*'"}) {
+    const int status =
+        std::system(fmt::format("{} {} >/dev/full 2>{}", SNELL_BINARY, args, err.string()).c_str());
+    std::stringstream message;
+    message << std::ifstream(err).rdbuf();
+    EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2) << args << ": " << message.str();
+    EXPECT_NE(message.str().find("snell: cannot write to standard output"), std::string::npos)
+        << args << ": " << message.str();
+    EXPECT_EQ(message.str().find("internal error"), std::string::npos) << message.str();
+  }
+  fs::remove(err);
 }
 
 TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
