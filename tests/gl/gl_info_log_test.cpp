@@ -60,3 +60,17 @@ TEST(GlInfoLog, HeadingsAndUnplacedLinesPlaceNothing) {
 }
 
 }  // namespace
+
+namespace {
+
+// A line number past int's range (a shader's own `#line 99999999999`) made
+// std::stoi throw, and the compile error was a Crash: it now names no line.
+TEST(GlInfoLog, ALineNumberPastIntsRangeNamesNoLine) {
+  const auto found =
+      parseInfoLog("vertex", "0:99999999999(3): error: syntax error, unexpected ';'\n");
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].line, 0);
+  EXPECT_EQ(found[0].message, "syntax error, unexpected ';'");
+}
+
+}  // namespace

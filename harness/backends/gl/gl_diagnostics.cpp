@@ -3,6 +3,8 @@
 #include <regex>
 #include <sstream>
 
+#include "backends/compiler_line.h"
+
 namespace snell::gl {
 
 std::vector<CompileDiagnostic> parseInfoLog(const std::string& stage, const std::string& log) {
@@ -13,7 +15,7 @@ std::vector<CompileDiagnostic> parseInfoLog(const std::string& stage, const std:
   for (std::string line; std::getline(lines, line);) {
     std::smatch match;
     if (std::regex_match(line, match, kMesa) || std::regex_match(line, match, kNvidia))
-      out.push_back({stage, std::stoi(match[1]), match[2] == "error", match[3]});
+      out.push_back({stage, compilerLineNumber(match[1].str()), match[2] == "error", match[3]});
   }
   return out;
 }

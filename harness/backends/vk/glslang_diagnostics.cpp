@@ -3,6 +3,8 @@
 #include <regex>
 #include <sstream>
 
+#include "backends/compiler_line.h"
+
 namespace snell::vk {
 
 std::vector<CompileDiagnostic> parseGlslangLog(const std::string& stage, const std::string& log) {
@@ -14,7 +16,7 @@ std::vector<CompileDiagnostic> parseGlslangLog(const std::string& stage, const s
   for (std::string line; std::getline(lines, line);) {
     std::smatch match;
     if (!std::regex_match(line, match, kPlaced)) continue;
-    out.push_back({stage, std::stoi(match[3]), match[1] == "ERROR", match[4]});
+    out.push_back({stage, compilerLineNumber(match[3].str()), match[1] == "ERROR", match[4]});
   }
   return out;
 }

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cctype>
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -127,8 +128,12 @@ std::string hexFlags(std::uint32_t flags) {
 bool matches(const std::string& wanted, std::uint32_t index, const VkPhysicalDeviceProperties& p) {
   if (wanted.empty()) return true;
   if (wanted == "gpu") return p.deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU;
-  if (wanted.find_first_not_of("0123456789") == std::string::npos)
-    return std::stoul(wanted) == index;
+  if (wanted.find_first_not_of("0123456789") == std::string::npos) {
+    // A number past any index matches no device (stoul threw on it).
+    unsigned long long number = 0;
+    const auto parsed = std::from_chars(wanted.data(), wanted.data() + wanted.size(), number);
+    return parsed.ec == std::errc() && number == index;
+  }
   unsigned vendor = 0, device = 0;
   char rest = 0;
   if (std::sscanf(wanted.c_str(), "%x:%x%c", &vendor, &device, &rest) == 2)
