@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/message.h"
 #include "refract_inputs.h"
 
 namespace {
@@ -30,9 +31,9 @@ int main(int argc, char** argv) {
   if (argc > 3 || count == 0 ||
       (argc == 3 &&
        std::from_chars(argv[2], argv[2] + std::string(argv[2]).size(), seed).ec != std::errc())) {
-    fmt::print(stderr,
-               "usage: snell_refract_vectors COUNT [SEED]: COUNT a whole number of lines from 1 "
-               "to 1e12 (1e6 is accepted), SEED a whole number\n");
+    snell::printMessage(stderr,
+                        "usage: snell_refract_vectors COUNT [SEED]: COUNT a whole number of lines "
+                        "from 1 to 1e12 (1e6 is accepted), SEED a whole number\n");
     return 2;
   }
   snell::bench::RefractInputs inputs(seed);

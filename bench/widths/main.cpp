@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "core/errors.h"
+#include "core/message.h"
 #include "widths/inputs.h"
 #include "widths/measure.h"
 #include "widths/report.h"
@@ -65,10 +66,10 @@ int run(const Options& options) {
   if (!options.check) return 0;
   const auto unsound = unsoundRows(report);
   for (const RowStats* r : unsound)
-    fmt::print(stderr,
-               "unsound: {} ({}): {} conforming values outside snell's interval, none "
-               "outside the dEQP-style one; first: {}\n",
-               r->row, r->rules, r->snellEscapes, r->snellEscape);
+    printMessage(stderr,
+                 "unsound: {} ({}): {} conforming values outside snell's interval, none "
+                 "outside the dEQP-style one; first: {}\n",
+                 r->row, r->rules, r->snellEscapes, r->snellEscape);
   return unsound.empty() ? 0 : 1;
 }
 
@@ -98,10 +99,10 @@ int main(int argc, char** argv) {
   try {
     return run(options);
   } catch (const UsageError& error) {
-    fmt::print(stderr, "snell_widths: {}\n", error.what());
+    snell::printMessage(stderr, "snell_widths: {}\n", error.what());
     return 2;
   } catch (const std::exception& error) {
-    fmt::print(stderr, "snell_widths: {}\n", error.what());
+    snell::printMessage(stderr, "snell_widths: {}\n", error.what());
     return 2;
   }
 }
