@@ -41,6 +41,9 @@ std::string backendListReason(const std::string& list, bool allowAll) {
   const std::vector<std::string> names = splitBackendList(list);
   if (names.empty())
     return allowAll ? "name at least one backend, or all" : "name at least one backend";
+  // "gl," or "gl,,vk" (an unset variable in a CI script) ran what was left.
+  if (list.front() == ',' || list.back() == ',' || list.find(",,") != std::string::npos)
+    return fmt::format("'{}' has an empty name between its commas; name each backend", list);
   for (std::size_t k = 0; k < names.size(); ++k) {
     if (std::string reason = unknownBackendReason(names[k]); !reason.empty()) return reason;
     // Twice in one run, a backend's every case would run twice and write
@@ -91,7 +94,15 @@ void requireDriverOptionsRead(const std::vector<std::string>& names, const std::
 void addDriverOptions(CLI::App& sub, std::string& device, std::string& glProvider) {
   sub.add_option("--device", device,
                  "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
-                 "device backends (gl:gpu): a device index");
+                 "device backends (gl:gpu): a device index")
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            // Empty, it stood for the default device.
+            return text.empty() ? "an empty device; name one (`snell devices` lists them), or "
+                                  "leave the option out"
+                                : "";
+          },
+          ""));
   sub.add_option("--gl-provider", glProvider,
                  "OpenGL context provider in place of the backend's own: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));

@@ -89,13 +89,17 @@ void checkFile(const OutputPath& file) {
                     file.option, file.path.string(), folder.string()));
   // To root, access() says yes where no file can be made (/proc, a
   // read-only mount): one is made there and removed, as the file itself
-  // will be written (beside it, then renamed).
-  // Named for the file, cut short so that a name near NAME_MAX still fits.
-  const fs::path probe =
-      folder /
-      fmt::format(".{}.probe-{}", fs::path(file.path).filename().string().substr(0, 64), getpid());
+  // will be written: beside it, under the temporary name
+  // writeFileAtomically gives it, then renamed. A name a few characters
+  // short of the file system's limit fits, and its temporary one does not.
+  const fs::path probe = folder / temporaryPathFor(file.path).filename();
   const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   const int error = fd < 0 ? errno : 0;
+  if (fd < 0 && error == ENAMETOOLONG)
+    throw UsageError(fmt::format(
+        "{} {}: too long a name: snell writes the file first as {} beside it, which is too "
+        "long for the file system; name a shorter file",
+        file.option, file.path.string(), probe.filename().string()));
   if (fd < 0 && error != EEXIST)
     throw UsageError(
         fmt::format("{} {}: no file can be made in folder {} ({}); name a file in a "

@@ -71,8 +71,12 @@ std::vector<std::string> backendsToRun(const SuiteOptions& options,
     for (const std::string& name : splitBackendList(options.backend))
       wanted.push_back(backendRegistry().find(name).name);
   }
-  const std::vector<BackendProbe> probes = probeBackends(
-      fs::read_symlink("/proc/self/exe").string(), wanted, workerBackendArgs(options));
+  // Brought up as the cases' workers bring it up: a validation layer that
+  // is not installed failed every case as a Crash, each saying why.
+  std::vector<std::string> probeArgs = workerBackendArgs(options);
+  if (options.validation) probeArgs.push_back("--validation");
+  const std::vector<BackendProbe> probes =
+      probeBackends(fs::read_symlink("/proc/self/exe").string(), wanted, probeArgs);
   std::vector<std::string> up;
   for (const BackendProbe& probe : probes) {
     if (probe.up) {

@@ -139,6 +139,11 @@ Command addSweepCommand(CLI::App& app) {
       driverArgs.insert(driverArgs.end(), {"--gl-provider", options->glProvider});
     std::vector<OutputPath> files;
     if (!options->json.empty()) files.push_back({"--json", options->json});
+    // The files the sweep writes in --out for its own use: --json on one of
+    // them was overwritten by it, or overwrote it.
+    if (fs::is_directory(options->out))
+      for (const char* own : {"sweep-input.jsonl", "sweep-listing-draws.txt"})
+        files.push_back({fmt::format("--out (its {})", own), fs::path(options->out) / own});
     checkOutputs(files, {{"--out", options->out}});
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;

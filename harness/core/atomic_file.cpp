@@ -42,9 +42,14 @@ void StreamingFile::finish(const std::string& finalText) {
   fs::remove(partial_);
 }
 
-void writeFileAtomically(const fs::path& path, const std::string& text) {
+fs::path temporaryPathFor(const fs::path& path) {
   fs::path temporary = path;
   temporary += fmt::format(".tmp{}", getpid());
+  return temporary;
+}
+
+void writeFileAtomically(const fs::path& path, const std::string& text) {
+  const fs::path temporary = temporaryPathFor(path);
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out)

@@ -37,4 +37,7 @@ class StreamingFile {
 // Writes the whole text to a temporary file and renames it over `path`.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& text);
 
+// The temporary file writeFileAtomically writes beside `path` first.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+
 }  // namespace snell

@@ -32,10 +32,12 @@ struct Outcome {
   std::string out;  // stdout and stderr together
 };
 
-Outcome snell(const std::string& args, const std::string& input = "") {
+// `env`: a shell prefix such as "VK_LAYER_PATH=/nonexistent".
+Outcome snell(const std::string& args, const std::string& input = "", const std::string& env = "") {
   const fs::path in = fs::temp_directory_path() / fmt::format("snell-cli-in-{}", ::getpid());
   std::ofstream(in) << input;
-  const std::string command = fmt::format("{} {} < {} 2>&1", SNELL_BINARY, args, in.string());
+  const std::string command =
+      fmt::format("{} {} {} < {} 2>&1", env, SNELL_BINARY, args, in.string());
   FILE* pipe = popen(command.c_str(), "r");
   Outcome outcome;
   std::array<char, 4096> buffer;
@@ -170,6 +172,7 @@ TEST(Cli, OutputsThatAreNotPlainFilesOrAreInputsAreRefusedBeforeTheRun) {
            {"--junit ''", "--junit: an empty path"},
            {"--expectations ''", "--expectations: an empty path"},
            {"--filter ''", "--filter: an empty glob"},
+           {"--device ''", "--device: an empty device"},
            {fmt::format("--expectations {0}/gl-fails.txt --json {0}/gl-fails.txt", d),
             "--expectations"}}) {
     const Outcome o = snell(run + " " + args);
@@ -218,6 +221,9 @@ TEST(Cli, OutputsThatCannotBeWrittenAreExit2BeforeTheRun) {
             fmt::format("--json {}/{}.jsonl: File name too long", d, std::string(300, 'x'))},
            {fmt::format("--out {0}/{1}/sub", d, std::string(300, 'x')),
             fmt::format("--out {}/{}/sub: File name too long", d, std::string(300, 'x'))},
+           // Short enough itself, but not its temporary name (FILE.tmpPID).
+           {fmt::format("--junit {0}/{1}.xml", d, std::string(250, 'x')),
+            fmt::format("--junit {}/{}.xml: too long a name", d, std::string(250, 'x'))},
            {fmt::format("--json {0}/file/r.jsonl", d), "/file is a file, not a folder"},
            {fmt::format("--json {0}/folder", d), "/folder: is a folder"},
            {fmt::format("--junit {0}/no-such/r.xml", d), "/no-such does not exist"},
@@ -277,6 +283,9 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"sweep --timeout nan", "not nan"},
            {"compare --drift nan a b", "not nan"},
            {"run --backend gl,gl", "`gl` is named twice"},
+           {"run --backend gl,", "'gl,' has an empty name between its commas"},
+           {"sweep --backend ,vk", "',vk' has an empty name between its commas"},
+           {"advise --backend ''", "--backend: an empty backend"},
            {"sweep --listings 'no-such-listing*'", "no listing matches --listings"},
            {"sweep --no-builtins --listings ''", "nothing to sweep"},
            {"eval --backend oracle --device 0 -", "--device 0: oracle does not take a device"},
@@ -354,6 +363,19 @@ TEST(Cli, ValidationWithoutVulkanIsNoted) {
   EXPECT_NE(o.out.find("--validation checks Vulkan backends only, and this run has none (gl)"),
             std::string::npos)
       << o.out;
+}
+
+// --validation where the layer cannot be found: every case was a Crash,
+// exit 1, each record saying why. The backend is brought up as its workers
+// bring it up, so the run stops before any case, exit 2.
+TEST(Cli, ValidationWithoutTheLayerIsExit2BeforeAnyCase) {
+  const Outcome o = snell("run --filter 'orange-book/14.1-fresnel/sweep' --backend vk --validation",
+                          "", "VK_LAYER_PATH=/nonexistent");
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("backend vk cannot be brought up"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("is not installed: install vulkan-validationlayers"), std::string::npos)
+      << o.out;
+  EXPECT_EQ(o.out.find("Crash"), std::string::npos) << o.out;
 }
 
 TEST(Cli, FilterMatchingNothingIsExit2WithHint) {

@@ -189,6 +189,21 @@ TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2BeforeAnySweep) {
   EXPECT_FALSE(std::filesystem::exists(out)) << all.out;
 }
 
+// --json on the file the sweep writes its own input to, in --out: one
+// overwrote the other, with exit 0.
+TEST(SweepCli, JsonOnTheSweepsOwnInputFileIsRefused) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-own-{}", ::getpid());
+  fs::create_directories(out);
+  const Outcome o =
+      runSnell(fmt::format("sweep --quick --backend gl --no-charts --out {0} --json "
+                           "{0}/sweep-input.jsonl",
+                           out.string()));
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("and --out (its sweep-input.jsonl)"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("are one file"), std::string::npos) << o.out;
+  fs::remove_all(out);
+}
+
 TEST(SweepCli, AnUnknownBackendIsAUsageError) {
   const Outcome o = runSnell("sweep --quick --backend nosuch --no-charts --out /tmp/snell-sweep-x");
   EXPECT_EQ(o.code, 2) << o.out;
