@@ -235,6 +235,12 @@ Command addBenchCommand(CLI::App& app) {
           ladders.push_back({entry.path(), out / entry.path().filename()});
       std::sort(ladders.begin(), ladders.end());
     }
+    if (ladders.empty() && std::filesystem::exists(options->run.methodsDir / "manifest.toml"))
+      throw UsageError(fmt::format(
+          "{}: one method (its manifest.toml), not a ladder of methods; give --methods the "
+          "folder that holds it ({})",
+          options->run.methodsDir.string(),
+          std::filesystem::weakly_canonical(options->run.methodsDir).parent_path().string()));
     if (ladders.empty())
       throw UsageError(fmt::format("{}: no method manifests (manifest.toml) found here",
                                    options->run.methodsDir.string()));

@@ -168,6 +168,21 @@ TEST(LadderBenchCli, ALaterLaddersMistakeIsFoundBeforeAnyLadderIsTimed) {
   fs::remove_all(dir);
 }
 
+// One method's folder given as --methods said "no method manifests found
+// here" beside its manifest.toml.
+TEST(LadderBenchCli, OneMethodsFolderIsNamedAsNotALadder) {
+  const Outcome run = runSnell(
+      fmt::format("bench --methods {}/shaders/methods/fresnel/1-constant-mix --backends gl "
+                  "--no-ablation --out /tmp/snell-bench-one-method",
+                  SNELL_SOURCE_ROOT));
+  EXPECT_EQ(run.code, 2) << run.out;
+  EXPECT_NE(run.out.find("1-constant-mix: one method (its manifest.toml), not a ladder of "
+                         "methods; give --methods the folder that holds it"),
+            std::string::npos)
+      << run.out;
+  EXPECT_FALSE(fs::exists("/tmp/snell-bench-one-method"));
+}
+
 // A file where a ladder's images or bench.json go was found after the
 // ladder's measurement, as an internal error.
 TEST(LadderBenchCli, AFileWhereALaddersOutputsGoIsRefusedBeforeAnyTiming) {
