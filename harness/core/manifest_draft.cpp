@@ -45,7 +45,12 @@ std::string stageFile(const fs::path& dir, const std::string& given, const char*
     if (!fs::is_regular_file(dir / given))
       throw UsageError(fmt::format("{}: no such {} stage file in {}; {} names a file in the folder",
                                    given, stage, dir.string(), option));
-    return given;
+    // The manifest names its stages relative to its folder (a sibling's
+    // through "..", as the catalog's glass-to-air listing does): a path
+    // given absolute was written as given, which holds on this machine only.
+    const fs::path relative =
+        fs::weakly_canonical(dir / given).lexically_relative(fs::weakly_canonical(dir));
+    return relative.empty() ? given : relative.generic_string();
   }
   std::vector<std::string> found;
   for (const auto& entry : fs::directory_iterator(dir))
@@ -520,6 +525,11 @@ Draft draftOf(const DraftRequest& request) {
           stageFile(dir, request.fragmentFile, ".frag", "fragment", "--fragment", false);
       !file.empty())
     fragment = readStageFile(dir, file);
+  if (fragment && fragment->file == vertex.file)
+    throw UsageError(fmt::format(
+        "{}: named as both the vertex and the fragment stage; name the fragment stage's file "
+        "with --fragment, or leave the option out",
+        vertex.file));
 
   std::ostringstream out;
   out << fmt::format(

@@ -6,6 +6,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "snell_process.h"
 
@@ -77,6 +80,35 @@ TEST_F(InitCli, BadInputIsOneMessageAndExit2) {
     EXPECT_NE(outcome.out.find(c.message), std::string::npos) << c.args << "\n" << outcome.out;
   }
   EXPECT_FALSE(fs::exists(dir_ / "manifest.toml"));
+}
+
+// A stage file named by an absolute path was written into the manifest as
+// given (a path that holds on this machine only), and the vertex file named
+// as the fragment stage too was drafted, failing only at `run`. The
+// manifest names each stage relative to DIR (a sibling folder's through
+// "..", as the catalog does); one file for both stages is refused.
+TEST_F(InitCli, StageFilesAreNamedRelativeToTheFolderAndOnceEach) {
+  copyListing();
+  const fs::path listing = dir_ / "listing";
+  fs::create_directories(listing);
+  fs::create_directories(dir_ / "elsewhere");
+  fs::rename(dir_ / "eyespace.vert", dir_ / "elsewhere" / "eyespace.vert");
+  fs::rename(dir_ / "refraction.frag", listing / "refraction.frag");
+  const auto both =
+      runSnell("init --vertex ../elsewhere/eyespace.vert --fragment ../elsewhere/eyespace.vert " +
+               listing.string());
+  EXPECT_EQ(both.code, 2) << both.out;
+  EXPECT_NE(
+      both.out.find("../elsewhere/eyespace.vert: named as both the vertex and the fragment stage"),
+      std::string::npos)
+      << both.out;
+  EXPECT_FALSE(fs::exists(listing / "manifest.toml"));
+  const auto absolute = runSnell(
+      "init --vertex " + (dir_ / "elsewhere" / "eyespace.vert").string() + " " + listing.string());
+  EXPECT_EQ(absolute.code, 0) << absolute.out;
+  EXPECT_NE(readText(listing / "manifest.toml").find("vertex = \"../elsewhere/eyespace.vert\""),
+            std::string::npos)
+      << readText(listing / "manifest.toml");
 }
 
 // A stage whose every output is refused says why (here glslang's syntax
