@@ -35,6 +35,11 @@ fs::path renderedImagePath(const fs::path& outDir, const std::string& caseId,
   return outDir / caseId / (backend + ".exr");
 }
 
+fs::path heatMapPath(const fs::path& outDir, const std::string& caseId, const std::string& backend,
+                     const std::string& against) {
+  return outDir / caseId / (backend + "-vs-" + against + ".png");
+}
+
 fs::path maskImagePath(const fs::path& outDir, const std::string& caseId) {
   return outDir / caseId / "mask.exr";
 }
@@ -122,8 +127,8 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
   const OracleStore* store = options.store ? &*options.store : nullptr;
   check.comparisons.push_back(compareTimed(store, "reference", outcome.image, reference.color,
                                            reference.mask, c.spec.image));
-  writeHeatMapTimed(dir / (name + "-vs-reference.png"), outcome.image, reference.color,
-                    reference.mask, c.spec.image.fail);
+  writeHeatMapTimed(heatMapPath(options.outDir, c.id, name, "reference"), outcome.image,
+                    reference.color, reference.mask, c.spec.image.fail);
 
   const std::string goldenKey = options.goldenKey.empty() ? name : options.goldenKey;
   if (!options.goldenDir.empty() && !hasAnyGolden(options.goldenDir, goldenKey, options.outDir)) {
@@ -141,8 +146,8 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
       }();
       check.comparisons.push_back(
           compareTimed(store, "golden", outcome.image, golden.image, reference.mask, c.spec.image));
-      writeHeatMapTimed(dir / (name + "-vs-golden.png"), outcome.image, golden.image,
-                        reference.mask, c.spec.image.fail);
+      writeHeatMapTimed(heatMapPath(options.outDir, c.id, name, "golden"), outcome.image,
+                        golden.image, reference.mask, c.spec.image.fail);
     } catch (const UsageError& error) {
       check.goldenProblem = error.what();
     }

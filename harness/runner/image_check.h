@@ -52,6 +52,11 @@ std::map<std::string, const Image*> decalBindings(const Manifest& m, const Scene
 std::filesystem::path renderedImagePath(const std::filesystem::path& outDir,
                                         const std::string& caseId, const std::string& backend);
 
+// Where the heat map of a backend's image of a case against `against`
+// ("reference" or "golden") is written.
+std::filesystem::path heatMapPath(const std::filesystem::path& outDir, const std::string& caseId,
+                                  const std::string& backend, const std::string& against);
+
 // The reference's mask travels between processes as an EXR (mask value in red).
 std::filesystem::path maskImagePath(const std::filesystem::path& outDir, const std::string& caseId);
 Image maskAsImage(const ReferenceImage& reference);

@@ -88,6 +88,11 @@ TEST_F(GoldenCli, OnePixelBeyondFailFails) {
   EXPECT_EQ(o.result["status"], "Fail");
   EXPECT_NE(o.output.find("image vs golden: fail"), std::string::npos) << o.output;
   EXPECT_NE(o.output.find("at (128, 128), 1 of"), std::string::npos) << o.output;
+  // The failure names the heat map that shows it (the message named none).
+  const fs::path heatMap = dir_ / "out" / kCase / "gl-vs-golden.png";
+  EXPECT_NE(o.output.find("pixels over 0.004; heat map " + heatMap.string()), std::string::npos)
+      << o.output;
+  EXPECT_TRUE(fs::exists(heatMap));
 }
 
 TEST_F(GoldenCli, OnePixelBetweenWarnAndFailIsAQualityWarning) {

@@ -101,12 +101,19 @@ void ImageCheckKind::run(const Case& c, const ResolvedBindings& bindings, CheckE
     result.status = worstOf(result.status, comparison.verdict == ImageVerdict::Fail ? Status::Fail
                                            : golden ? Status::QualityWarning
                                                     : Status::Pass);
+    // Where to look: the heat map (none when the sizes differ).
+    const std::string heatMap =
+        comparison.problem.empty()
+            ? fmt::format("; heat map {}", heatMapPath(env.imageOptions.outDir, c.id,
+                                                       env.backend.name(), comparison.against)
+                                               .string())
+            : "";
     result.message +=
-        fmt::format("image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}\n",
+        fmt::format("image vs {}: {}{}; max error {:.6g} at ({}, {}), {} of {} pixels over {}{}\n",
                     comparison.against, imageVerdictName(comparison.verdict),
                     comparison.problem.empty() ? "" : " (" + comparison.problem + ")",
                     comparison.maxError, comparison.maxX, comparison.maxY, comparison.failed,
-                    comparison.compared, c.spec.image.fail);
+                    comparison.compared, c.spec.image.fail, heatMap);
   }
   if (!check.goldenNote.empty()) result.message += check.goldenNote + "\n";
   if (!check.goldenProblem.empty()) {
