@@ -71,12 +71,7 @@ Command addAdviseCommand(CLI::App& app) {
                    "A `snell bench` bench.json (in place of the ladder's default)")
       ->check(nonEmptyPath());
   advise->add_option("--backend", options->backend, "Only this backend (default: each measured)")
-      ->check(CLI::Validator(
-          [](const std::string& text) -> std::string {
-            // Empty, it stood for every backend.
-            return text.empty() ? "an empty backend; name one, or leave the option out" : "";
-          },
-          ""));
+      ->check(nonEmpty("backend", "name one"));
   advise->add_flag("--json", options->json, "One JSON object on standard output, for scripts");
   advise->footer("Exit code 0 when every backend has a method within budget, 1 when one has none.");
   return [options, ladder] {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "backends/backend_registry.h"
+#include "cli/option_checks.h"
 #include "core/errors.h"
 
 namespace snell::cli {
@@ -95,14 +96,7 @@ void addDriverOptions(CLI::App& sub, std::string& device, std::string& glProvide
   sub.add_option("--device", device,
                  "Vulkan: a physical device by index, vendor:device id (hex) or name; EGL "
                  "device backends (gl:gpu): a device index")
-      ->check(CLI::Validator(
-          [](const std::string& text) -> std::string {
-            // Empty, it stood for the default device.
-            return text.empty() ? "an empty device; name one (`snell devices` lists them), or "
-                                  "leave the option out"
-                                : "";
-          },
-          ""));
+      ->check(nonEmpty("device", "name one (`snell devices` lists them)"));
   sub.add_option("--gl-provider", glProvider,
                  "OpenGL context provider in place of the backend's own: osmesa or egl")
       ->check(CLI::IsMember({"osmesa", "egl"}));

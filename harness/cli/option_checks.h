@@ -17,25 +17,20 @@ inline CLI::Validator notNan() {
       "");
 }
 
-// A path given empty (an unset shell variable) would otherwise stand for
-// the option's default, which is another path than the one meant.
-inline CLI::Validator nonEmptyPath() {
+// A value given empty (an unset shell variable) would otherwise stand for
+// the option's default: another path, every case, the default device,
+// every backend. `what` names the value, `hint` how to give one.
+inline CLI::Validator nonEmpty(const std::string& what, const std::string& hint = "give one") {
   return CLI::Validator(
-      [](const std::string& text) -> std::string {
-        return text.empty() ? "an empty path; give one, or leave the option out" : "";
+      [what, hint](const std::string& text) -> std::string {
+        return text.empty() ? "an empty " + what + "; " + hint + ", or leave the option out" : "";
       },
       "");
 }
 
-// A glob given empty (an unset shell variable) matched every case.
+inline CLI::Validator nonEmptyPath() { return nonEmpty("path"); }
 inline CLI::Validator nonEmptyGlob() {
-  return CLI::Validator(
-      [](const std::string& text) -> std::string {
-        return text.empty() ? "an empty glob; give one ('*' matches every case), or leave the "
-                              "option out"
-                            : "";
-      },
-      "");
+  return nonEmpty("glob", "give one ('*' matches every case)");
 }
 
 // A count of whole units (seconds, repeats): CLI11 turns "1.5" for an

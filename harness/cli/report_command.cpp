@@ -81,11 +81,7 @@ Command addReportCommand(CLI::App& app) {
         throw;
       }
     }();
-    const bool imageCases = std::any_of(runs.begin(), runs.end(), [](const ReportRun& run) {
-      return std::any_of(run.results.begin(), run.results.end(),
-                         [](const CaseResult& r) { return !r.images.empty(); });
-    });
-    if (imageCases && stats.heatMaps == 0 && stats.pictures == 0)
+    if (stats.imagesMissing)
       printMessage(stderr,
                    "snell: note: {} holds none of these runs' images, so the report shows no "
                    "picture or heat map; pass --images the run's --out folder\n",

@@ -130,7 +130,8 @@ class ReportBuilder {
     page.set("cases", cases);
     // Said on the page too: a reader of the page never saw the command's
     // stderr, and failing image cases with no picture looked complete.
-    if (hasImageCases() && stats.heatMaps == 0 && stats.pictures == 0)
+    stats.imagesMissing = hasImageCases() && stats.heatMaps == 0 && stats.pictures == 0;
+    if (stats.imagesMissing)
       page.set("images_missing",
                fmt::format("No pictures or heat maps: {} (--images) holds none of these runs' "
                            "images; a run writes them to its --out folder.",

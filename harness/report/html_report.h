@@ -39,6 +39,8 @@ struct ReportStats {
   // Results of the last run whose images in --images are another run's
   // (and so are not shown).
   std::size_t otherRunsImages = 0;
+  // The runs have image cases and --images held none of their images.
+  bool imagesMissing = false;
   std::size_t bytes = 0;
 };
 
