@@ -80,6 +80,7 @@ int bless(const SuiteOptions& options) {
   std::vector<OutputPath> files;
   if (!options.json.empty()) files = resultsFileOutputs("--json", options.json);
   checkOutputs(files, {{"--out", options.out}}, {{"--golden", options.golden}});
+  checkNotGoldenFiles(files, {"--golden", options.golden});
   const SuiteRun suite = runSuite(options, true, false);
   // A bless cut short blesses nothing: a partial set of new goldens beside
   // old ones, with exit 0, would be committed as if it were whole.

@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "golden/golden_store.h"
 
 namespace snell::cli {
 namespace {
@@ -237,6 +238,15 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
                         "name another file",
                         files[i].option, named(files[i], id), input.option));
   }
+}
+
+void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden) {
+  for (const OutputPath& file : files)
+    if (isGoldenFile(golden.path, file.path))
+      throw UsageError(fmt::format(
+          "{} {} is a golden file under {} {}: writing it would replace the blessed golden; "
+          "name a file outside the golden folder's case folders",
+          file.option, file.path.string(), golden.option, golden.path.string()));
 }
 
 }  // namespace snell::cli

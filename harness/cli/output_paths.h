@@ -29,6 +29,11 @@ std::vector<OutputPath> resultsFileOutputs(const std::string& option,
 void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
                   const std::vector<OutputPath>& inputs = {});
 
+// Throws UsageError when an output file is one of the goldens under
+// `golden` (run's or bless's --golden): a results file named there would
+// replace a blessed image or its metadata.
+void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden);
+
 // The outermost folder of `path` that does not exist yet, or empty when all
 // of it does: what a command that makes `path` and then fails removes, so
 // that it leaves nothing behind that it made.

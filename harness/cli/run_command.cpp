@@ -45,6 +45,7 @@ Command addRunCommand(CLI::App& app) {
     std::vector<OutputPath> inputs = {{"--golden", options->golden}};
     if (!options->expectations.empty()) inputs.push_back({"--expectations", options->expectations});
     checkOutputs(files, {{"--out", options->out}}, inputs);
+    checkNotGoldenFiles(files, {"--golden", options->golden});
     const SuiteRun suite = runSuite(*options, false, true);
     return reportResults(
         suite.results, suite.expectations, suite.skipped,

@@ -38,6 +38,22 @@ bool hasAnyGolden(const fs::path& root, const std::string& backend, const fs::pa
   return false;
 }
 
+bool isGoldenFile(const fs::path& root, const fs::path& path) {
+  std::error_code error;
+  const fs::path file = fs::weakly_canonical(path, error);
+  if (error) return false;
+  const fs::path folder = fs::weakly_canonical(root, error);
+  if (error) return false;
+  // ROOT/CASE/KEY.ext: below the root by a case folder at least.
+  const fs::path inside = file.lexically_relative(folder);
+  if (inside.empty() || *inside.begin() == ".." || !inside.has_parent_path()) return false;
+  const std::string extension = file.extension().string();
+  if (extension != ".exr" && extension != ".png" && extension != ".json") return false;
+  const fs::path stem = file.parent_path() / file.stem();
+  return fs::is_regular_file(fs::path(stem).concat(".exr"), error) &&
+         fs::is_regular_file(fs::path(stem).concat(".json"), error);
+}
+
 Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,
                   int expectedWidth, int expectedHeight, const std::string& blessCommand,
                   const std::function<Image(const fs::path&)>& read) {

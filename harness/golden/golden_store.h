@@ -31,6 +31,13 @@ struct Golden {
 bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend,
                   const std::filesystem::path& skip = {});
 
+// Whether `path` is one of a golden's files under `root`: ROOT/CASE/KEY.exr,
+// .png or .json where KEY.exr and KEY.json are there (a golden that has
+// been blessed, whatever its case and backend: a results file's
+// FILE.timing.json has no FILE.timing.exr beside it). Another command's output written
+// there would replace it, though goldens change only through `snell bless`.
+bool isGoldenFile(const std::filesystem::path& root, const std::filesystem::path& path);
+
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
 // truncated, wrong size) and what to do: check it, or run `blessCommand`
 // (the caller's, since only it knows the flags the user ran with). The

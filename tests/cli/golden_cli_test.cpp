@@ -353,5 +353,41 @@ TEST_F(GoldenCli, RendersOfAnEarlierRunInsideTheGoldenFolderAreNotGoldens) {
       << readText(log);
 }
 
+TEST_F(GoldenCli, AResultsFileOnAGoldensFilesIsRefusedAndTheGoldenKept) {
+  const GoldenFiles files = goldenFiles(dir_ / "golden", kCase, "gl");
+  const std::string image = readText(files.image), metadata = readText(files.metadata);
+  const fs::path log = dir_ / "log-onto.txt";
+  const auto snellWith = [&](const std::string& command, const std::string& outputs) {
+    const int status = std::system(
+        fmt::format("{} {} --backend gl -j 1 --filter '{}' --shaders {} --golden {} --out {} {} "
+                    ">{} 2>&1",
+                    SNELL_BINARY, command, kCase, (dir_ / "shaders").string(),
+                    (dir_ / "golden").string(), (dir_ / "out").string(), outputs, log.string())
+            .c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  // The golden's metadata as run's results, its preview as run's JUnit
+  // file, its image as bless's results: each refused before any case runs.
+  const std::vector<std::pair<std::string, std::string>> attempts = {
+      {"run", "--json " + files.metadata.string()},
+      {"run", "--junit " + files.preview.string()},
+      {"bless", "--json " + files.image.string()}};
+  for (const auto& [command, outputs] : attempts) {
+    EXPECT_EQ(snellWith(command, outputs), 2) << command << " " << outputs << "\n" << readText(log);
+    EXPECT_NE(readText(log).find("is a golden file under --golden"), std::string::npos)
+        << readText(log);
+    EXPECT_FALSE(fs::exists(dir_ / "out" / kCase)) << "a case ran: " << outputs;
+  }
+  EXPECT_EQ(readText(files.image), image);
+  EXPECT_EQ(readText(files.metadata), metadata);
+  EXPECT_TRUE(fs::exists(files.preview));
+  // A results file in the golden folder itself is not a golden, nor is its
+  // FILE.timing.json, also on a second run that finds the first one's.
+  const fs::path results = dir_ / "golden" / "results.jsonl";
+  EXPECT_EQ(snellWith("run", "--json " + results.string()), 0) << readText(log);
+  EXPECT_EQ(snellWith("run", "--json " + results.string()), 0) << readText(log);
+  EXPECT_TRUE(fs::exists(dir_ / "golden" / "results.timing.json"));
+}
+
 }  // namespace
 }  // namespace snell
