@@ -153,6 +153,12 @@ SNELL_PIPELINE(oracle_glsl_reflect, "oracle:glsl", "reflect");
 SNELL_PIPELINE(gl_reflect, "gl", "reflect");
 SNELL_PIPELINE(oracle_vulkan_reflect, "oracle:vulkan", "reflect");
 SNELL_PIPELINE(vk_reflect, "vk", "reflect");
+// A GPU's own drivers, where the machine has one (skipped, with the reason,
+// where it has none).
+SNELL_PIPELINE(gl_gpu_refract, "gl:gpu", "refract");
+SNELL_PIPELINE(vk_gpu_refract, "vk:gpu", "refract");
+SNELL_PIPELINE(gl_gpu_reflect, "gl:gpu", "reflect");
+SNELL_PIPELINE(vk_gpu_reflect, "vk:gpu", "reflect");
 
 }  // namespace
 }  // namespace snell
