@@ -170,9 +170,11 @@ Command addBenchCommand(CLI::App& app) {
       ->delimiter(',');
   // Ranges stated here: past int, CLI11 says only "Could not convert".
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution")
+      ->check(wholeNumber())
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
   bench->add_option("--warmup", options->run.warmup, "Untimed frames after the first draw")
+      ->check(wholeNumber())
       ->check(CLI::Range(0, 100000))
       ->capture_default_str();
   bench

@@ -21,6 +21,7 @@ Command addRunCommand(CLI::App& app) {
       ->check(nonEmptyPath());
   sub->add_option("--reruns", options->reruns,
                   "Times an unexpected failure is run again; one that passes is a Flake")
+      ->check(wholeNumber())
       ->check(CLI::Range(0, 100))
       ->capture_default_str();
   // Given empty (unset CI variables), every job would run the whole suite.

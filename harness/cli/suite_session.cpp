@@ -211,6 +211,7 @@ void addSuiteOptions(CLI::App& sub, SuiteOptions& options) {
                  "Folder for rendered images, heat maps and masks (default: snell-out)")
       ->check(nonEmptyPath());
   sub.add_option("-j,--jobs", options.jobs, "Worker processes (default: one per core)")
+      ->check(wholeNumber())
       ->check(CLI::Range(1, 256));
   sub.add_option("--timeout", options.timeout,
                  "Seconds a case may take before its worker is killed (default: the manifest's)")

@@ -291,6 +291,12 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"eval --backend oracle --device 0 -", "--device 0: oracle does not take a device"},
            {"eval --backend foo -", "unknown backend 'foo': use oracle or one of gl, "},
            {"serve --backend gl --idle-exit 1.5", "--idle-exit: give a whole number"},
+           // A count that is not a whole number: not "Value abc not in range",
+           // and not hexadecimal read as a count.
+           {"run --reruns abc --filter 'no-such/*'", "--reruns: give a whole number"},
+           {"run -j 0x10 --filter 'no-such/*'", "--jobs: give a whole number"},
+           {"bench --repeats 2.5", "--repeats: give a whole number"},
+           {"bench --warmup -1", "--warmup: give a whole number"},
            // Empty (an unset variable): not the default folder in its place.
            {"run --oracle-cache '' --filter 'no-such/*'", "--oracle-cache: an empty path"},
            {"run --json '' --filter 'no-such/*'", "--json: an empty path"},
