@@ -13,10 +13,11 @@ namespace {
 using physics::Vec3;
 
 const Scene& sphereScene(const Scene& scene) {
-  if (scene.name != "sphere" || !scene.environment)
+  requireSphereScene(scene.name);
+  if (!scene.environment)
     throw UsageError(
-        fmt::format("the physics reference models the analytic sphere only; "
-                    "bench the `sphere` scene, not `{}`",
+        fmt::format("scene {} has no environment; the physics reference needs the "
+                    "sphere scene's",
                     scene.name));
   return scene;
 }
@@ -32,6 +33,14 @@ const std::vector<float>& matrix(const Scene& scene, const char* name) {
 }
 
 }  // namespace
+
+void requireSphereScene(const std::string& sceneName) {
+  if (sceneName != "sphere")
+    throw UsageError(
+        fmt::format("the physics reference models the analytic sphere only; "
+                    "bench the `sphere` scene, not `{}`",
+                    sceneName));
+}
 
 Vec3 reflectDirection(Vec3 d, Vec3 n) { return d - (2.0 * physics::dot(n, d)) * n; }
 

@@ -6,6 +6,7 @@
 // base-level bilinear cube sampling), so a reference differs from a method
 // in its optics only.
 #include <functional>
+#include <string>
 
 #include "core/image.h"
 #include "core/scene.h"
@@ -27,6 +28,10 @@ struct SphereHit {
 // refract gives (0, 0, 0) past the critical angle, as GLSL does.
 physics::Vec3 reflectDirection(physics::Vec3 d, physics::Vec3 n);
 physics::Vec3 refractDirection(physics::Vec3 d, physics::Vec3 n, double eta);
+
+// Throws UsageError unless `sceneName` is the sphere scene's, the one
+// scene the references model: a bench checks it before any other.
+void requireSphereScene(const std::string& sceneName);
 
 class SphereView {
  public:

@@ -15,6 +15,7 @@
 #include "bench/bench_runner.h"
 #include "bench/bench_table.h"
 #include "bench/ladder_checks.h"
+#include "bench/sphere_view.h"
 #include "bench/vertex_chart.h"
 #include "bench/wavelength_chart.h"
 #include "cli/backend_options.h"
@@ -203,6 +204,8 @@ Command addBenchCommand(CLI::App& app) {
       "resolution, over the pixels both images cover. Timing is measured, never asserted.");
   return [options, outOption] {
     bench::errorMetric({}, options->metric);  // refuse an unknown metric before drawing
+    // Another scene, known or not, is refused for that reason alone.
+    bench::requireSphereScene(options->run.scene);
     // Each backend once: a second timing of it would be a second record
     // under one key, which `advise` refuses.
     const std::vector<std::string>& backends = options->run.backends;

@@ -192,9 +192,10 @@ TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
   o = runSnell("bench --tessellations 1 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("--tessellations: 1 stacks"), std::string::npos) << o.out;
+  // The scene is refused first: dropping --tessellations would not help.
   o = runSnell("bench --scene torus --tessellations 8 --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
-  EXPECT_NE(o.out.find("not a sphere"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("bench the `sphere` scene, not `torus`"), std::string::npos) << o.out;
   o = runSnell("bench --metric psnr --out " + badOut);
   EXPECT_EQ(o.code, 2) << o.out;
   EXPECT_NE(o.out.find("unknown error metric"), std::string::npos) << o.out;

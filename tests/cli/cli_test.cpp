@@ -297,6 +297,10 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"run -j 0x10 --filter 'no-such/*'", "--jobs: give a whole number"},
            {"bench --repeats 2.5", "--repeats: give a whole number"},
            {"bench --warmup -1", "--warmup: give a whole number"},
+           // The one scene the references model, named for an unknown scene
+           // too (not a list of scenes it would refuse as well).
+           {"bench --scene cube", "bench the `sphere` scene, not `cube`"},
+           {"bench --scene torus", "bench the `sphere` scene, not `torus`"},
            // Empty (an unset variable): not the default folder in its place.
            {"run --oracle-cache '' --filter 'no-such/*'", "--oracle-cache: an empty path"},
            {"run --json '' --filter 'no-such/*'", "--json: an empty path"},
