@@ -51,24 +51,55 @@ nlohmann::json metadataOf(const CaseResult& r, const Case& c, const Image& image
 // What blessing changes, against the golden it replaces.
 struct GoldenChange {
   std::string description;
-  bool samePixels = false;    // the golden's image is this one, pixel for pixel
-  bool sameMetadata = false;  // and its metadata file says the same
+  bool samePixels = false;  // the golden's image is this one, pixel for pixel
+  // The metadata fields whose values differ from the golden's (with a field
+  // added or dropped), when the pixels are the same.
+  std::vector<std::string> changedFields;
 };
+
+std::vector<std::string> changedFieldsOf(const nlohmann::json& old, const nlohmann::json& now) {
+  std::set<std::string> keys;
+  for (const auto& [key, value] : old.items()) keys.insert(key);
+  for (const auto& [key, value] : now.items()) keys.insert(key);
+  std::vector<std::string> changed;
+  for (const std::string& key : keys)
+    if (!old.contains(key) || !now.contains(key) || old[key] != now[key]) changed.push_back(key);
+  return changed;
+}
 
 GoldenChange changeOf(const fs::path& goldenDir, const Case& c, const std::string& backend,
                       const Image& image, const nlohmann::json& metadata) {
+  const GoldenFiles files = goldenFiles(goldenDir, c.id, backend);
+  std::error_code error;
+  if (!fs::exists(files.image, error) && !fs::exists(files.metadata, error) &&
+      !fs::exists(files.preview, error))
+    return {"new", false, {}};
   try {
-    // A golden that cannot be read is replaced: the advice is never shown.
     const Golden old = readGolden(goldenDir, c.id, backend, image.width, image.height, "");
     const ImageComparison change = compareImages("golden", image, old.image, {}, c.spec.image);
-    if (change.maxError == 0) {
-      return {"unchanged, files left as they were", true, old.metadata == metadata};
-    }
+    if (change.maxError == 0)
+      return {"unchanged, files left as they were", true, changedFieldsOf(old.metadata, metadata)};
     return {fmt::format("changed: max error {:.6g} at ({}, {}), {} pixels over {}, {} over {}",
                         change.maxError, change.maxX, change.maxY, change.failed, c.spec.image.fail,
-                        change.warned, c.spec.image.warn)};
+                        change.warned, c.spec.image.warn),
+            false,
+            {}};
+  } catch (const UsageError& damaged) {
+    // A golden that cannot be read is replaced, and said to be: its files
+    // are there, so it is not new.
+    return {fmt::format("replaced a golden that could not be read: {}", damaged.what()), false, {}};
+  }
+}
+
+// Whether the golden's preview is a readable image of the golden's size: a
+// damaged one is written again beside a golden whose pixels are kept.
+bool previewIsWhole(const fs::path& preview, const Image& image) {
+  if (!fs::is_regular_file(preview)) return false;
+  try {
+    const Image read = readImage(preview);
+    return read.width == image.width && read.height == image.height;
   } catch (const UsageError&) {
-    return {"new"};
+    return false;
   }
 }
 
@@ -139,10 +170,14 @@ int bless(const SuiteOptions& options) {
       if (!fs::is_regular_file(files.preview)) {
         writeImageAtomically(files.preview, image);
         rewritten.push_back("the lost preview written again");
+      } else if (!previewIsWhole(files.preview, image)) {
+        writeImageAtomically(files.preview, image);
+        rewritten.push_back("the damaged preview written again");
       }
-      if (!change.sameMetadata) {
+      if (!change.changedFields.empty()) {
         writeFileAtomically(files.metadata, jsonText(metadata, 2) + "\n");
-        rewritten.push_back("metadata rewritten (driver or tolerance)");
+        rewritten.push_back(
+            fmt::format("metadata rewritten ({} changed)", fmt::join(change.changedFields, ", ")));
       }
       if (!rewritten.empty())
         description = fmt::format("unchanged pixels, {}", fmt::join(rewritten, "; "));

@@ -58,25 +58,31 @@ Golden readGolden(const fs::path& root, const std::string& caseId, const std::st
                   int expectedWidth, int expectedHeight, const std::string& blessCommand,
                   const std::function<Image(const fs::path&)>& read) {
   const GoldenFiles files = goldenFiles(root, caseId, backend);
-  const std::string hint = fmt::format("check it, or bless a new one with `{}`", blessCommand);
+  // Without a command (bless itself reads the golden it replaces) no advice.
+  const std::string hint =
+      blessCommand.empty() ? ""
+                           : fmt::format("; check it, or bless a new one with `{}`", blessCommand);
   Golden golden;
   try {
     golden.image = read(files.image);
   } catch (const UsageError& error) {
-    throw UsageError(fmt::format("golden {}; {}", error.what(), hint));
+    throw UsageError(fmt::format("golden {}{}", error.what(), hint));
   }
   if (golden.image.width != expectedWidth || golden.image.height != expectedHeight)
-    throw UsageError(fmt::format("golden {}: is {}x{}, the scene renders {}x{}; {}",
+    throw UsageError(fmt::format("golden {}: is {}x{}, the scene renders {}x{}{}",
                                  files.image.string(), golden.image.width, golden.image.height,
                                  expectedWidth, expectedHeight, hint));
   std::ifstream in(files.metadata);
-  if (!in) throw UsageError(fmt::format("golden {}: missing; {}", files.metadata.string(), hint));
+  if (!in) throw UsageError(fmt::format("golden {}: missing{}", files.metadata.string(), hint));
   try {
     golden.metadata = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& error) {
-    throw UsageError(fmt::format("golden {}: not valid JSON ({}); {}", files.metadata.string(),
+    throw UsageError(fmt::format("golden {}: not valid JSON ({}){}", files.metadata.string(),
                                  readableError(error), hint));
   }
+  if (!golden.metadata.is_object())
+    throw UsageError(fmt::format("golden {}: not a golden's metadata (a JSON object){}",
+                                 files.metadata.string(), hint));
   return golden;
 }
 

@@ -39,8 +39,9 @@ bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend,
 bool isGoldenFile(const std::filesystem::path& root, const std::filesystem::path& path);
 
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
-// truncated, wrong size) and what to do: check it, or run `blessCommand`
-// (the caller's, since only it knows the flags the user ran with). The
+// truncated, wrong size, metadata that is not a JSON object) and what to
+// do: check it, or run `blessCommand` (the caller's, since only it knows the
+// flags the user ran with; empty: no advice). The
 // image file is read by `read` (readImage, or one that keeps its pixels).
 Golden readGolden(const std::filesystem::path& root, const std::string& caseId,
                   const std::string& backend, int expectedWidth, int expectedHeight,

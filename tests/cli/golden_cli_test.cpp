@@ -264,12 +264,58 @@ TEST_F(GoldenBlessAgain, OnlyWhatChangedOrIsMissingIsWritten) {
   const Outcome o = snell("bless");
   EXPECT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("blessed (unchanged pixels, the lost preview written again; metadata "
-                          "rewritten"),
+                          "rewritten (tolerance changed))"),
             std::string::npos)
       << o.output;
   expectUntouched(files_.image, image);
   EXPECT_TRUE(fs::is_regular_file(files_.preview));
   EXPECT_EQ(nlohmann::json::parse(bytes(files_.metadata))["tolerance"]["warn"], 0.0025);
+}
+
+// A preview that does not read as an image is written again, as a lost one
+// is; a field of the metadata that changed is named (here the CPU features
+// the goldens were rendered with, not the driver or the tolerance).
+TEST_F(GoldenBlessAgain, ADamagedPreviewIsWrittenAgainAndAChangedFieldNamed) {
+  fs::resize_file(files_.preview, 100);
+  nlohmann::json metadata = nlohmann::json::parse(bytes(files_.metadata));
+  const nlohmann::json features = metadata["cpu_features"];
+  metadata["cpu_features"] = "sse4_1";
+  std::ofstream(files_.metadata, std::ios::trunc) << metadata.dump(2) << "\n";
+  const Snapshot image = snapshot(files_.image);
+  const Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("blessed (unchanged pixels, the damaged preview written again; "
+                          "metadata rewritten (cpu_features changed))"),
+            std::string::npos)
+      << o.output;
+  expectUntouched(files_.image, image);
+  EXPECT_GT(fs::file_size(files_.preview), 100u);
+  EXPECT_EQ(readImage(files_.preview).width, readImage(files_.image).width);
+  EXPECT_EQ(nlohmann::json::parse(bytes(files_.metadata))["cpu_features"], features);
+}
+
+// A golden whose files are there but do not read is replaced, and the
+// output says so and why: it is not a new golden.
+TEST_F(GoldenBlessAgain, AGoldenThatDoesNotReadIsSaidToBeReplaced) {
+  std::ofstream(files_.metadata, std::ios::trunc) << "not json {";
+  Outcome o = snell("bless");
+  EXPECT_EQ(o.code, 0) << o.output;
+  EXPECT_EQ(o.output.find("blessed (new)"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("blessed (replaced a golden that could not be read: golden " +
+                          files_.metadata.string() + ": not valid JSON"),
+            std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("bless a new one with"), std::string::npos) << o.output;
+  EXPECT_TRUE(nlohmann::json::parse(bytes(files_.metadata)).is_object());
+  // Valid JSON that is not a golden's metadata is no better.
+  std::ofstream(files_.metadata, std::ios::trunc) << "[1, 2]";
+  o = snell("run");
+  EXPECT_EQ(o.code, 1) << o.output;
+  EXPECT_NE(o.output.find("not a golden's metadata"), std::string::npos) << o.output;
+  // With every file gone it is new.
+  for (const fs::path& file : {files_.image, files_.preview, files_.metadata}) fs::remove(file);
+  o = snell("bless");
+  EXPECT_NE(o.output.find("blessed (new)"), std::string::npos) << o.output;
 }
 
 TEST_F(GoldenCli, BlessRefusesAnImageThatIsOffTheReference) {
