@@ -90,7 +90,9 @@ std::string toJUnitXml(const std::vector<CaseResult>& results, const JUnitNotes&
     pugi::xml_node test = suite.append_child("testcase");
     test.append_attribute("classname") = xmlSafe(fmt::format("snell.{}", r.backend)).c_str();
     test.append_attribute("name") = xmlSafe(r.caseId).c_str();
-    test.append_attribute("time") = r.seconds;
+    // Fixed-point seconds: JUnit's schema types `time` as xs:decimal, which
+    // has no exponent (a case of 4e-06 s is written 0.000004).
+    test.append_attribute("time") = fmt::format("{:.6f}", r.seconds).c_str();
     const std::string key = r.backend + " " + r.caseId;
     if (const auto expected = notes.expectedFailures.find(key);
         expected != notes.expectedFailures.end()) {

@@ -34,6 +34,19 @@ TEST(JUnit, StatusesBecomeFailuresSkipsAndQuotedDiagnostics) {
   EXPECT_NE(xml.find("0:4(8): error: syntax error"), std::string::npos) << xml;
 }
 
+// `time` is an xs:decimal in JUnit's schema: no exponent, however short the
+// case (a NotSupported one takes microseconds).
+TEST(JUnit, TimesAreDecimalsWithoutAnExponent) {
+  CaseResult quick = result("a/unsupported", Status::NotSupported, "reason");
+  quick.seconds = 4.057e-06;
+  CaseResult slow = result("b/pass", Status::Pass, "");
+  slow.seconds = 12.5;
+  const std::string xml = toJUnitXml({quick, slow});
+  EXPECT_NE(xml.find("time=\"0.000004\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("time=\"12.500000\""), std::string::npos) << xml;
+  EXPECT_EQ(xml.find("e-0"), std::string::npos) << xml;
+}
+
 // XML 1.0 cannot carry most control characters, not even as &#1;: a
 // crashed worker's stderr (an ESC of a coloured log) is spelled out instead,
 // so every XML parser reads the file.
