@@ -14,37 +14,49 @@
 namespace snell {
 namespace {
 
-// Records say which shard of how many ran them: a merge that lacks one of
-// the shards would be a run with cases missing and no word of it. Shards
-// are counted over all files, not per backend: a shard may hold no record
-// of a backend (its cases skipped there, or the backend not up on that
-// runner). A file with no results (a shard with no cases) may stand for any
-// one shard; records of a whole run, or written before records named their
-// shard, say nothing and are not counted.
+// Records say which shard of how many ran them, and of which run (its
+// --filter and --backend): a merge that lacks one of a run's shards would be
+// a run with cases missing and no word of it, also where another run's
+// shard (another filter or backend list) stands in its place. Shards are
+// counted per run over all files, not per backend: a shard may hold no
+// record of a backend (its cases skipped there, or the backend not up on
+// that runner), and each backend may be a run of its own, sharded apart. A
+// file with no results (a shard with no cases) may stand for any one shard;
+// records of a whole run, or written before records named their shard, say
+// nothing and are not counted.
 void requireEveryShard(const std::vector<ResultsFile>& files) {
   std::size_t emptyFiles = 0;
-  std::map<std::size_t, std::set<std::size_t>> seen;  // shard count N -> indices I
+  // (the run's selection, shard count N) -> indices I
+  std::map<std::pair<std::string, std::size_t>, std::set<std::size_t>> seen;
   for (const ResultsFile& file : files) {
     if (file.results.empty()) ++emptyFiles;
     for (const CaseResult& r : file.results)
       if (!r.shard.empty()) {
         const Shard shard = parseShard(r.shard);
-        seen[shard.count].insert(shard.index);
+        seen[{r.shardOf, shard.count}].insert(shard.index);
       }
   }
-  for (const auto& [count, indices] : seen) {
+  // Every run that lacks shards is named: where a shard of another run was
+  // given in place of one, both runs are.
+  std::vector<std::string> lacking;
+  for (const auto& [run, indices] : seen) {
+    const auto& [selection, count] = run;
     std::vector<std::string> missing;
     for (std::size_t i = 1; i <= count; ++i)
       if (!indices.contains(i)) missing.push_back(fmt::format("{}/{}", i, count));
     if (missing.size() > emptyFiles)
-      throw UsageError(fmt::format(
-          "no results of shard {}{}: merge every shard's results file (an empty one counts), or "
-          "run the missing shard",
-          fmt::join(missing, ", "),
-          emptyFiles == 0   ? std::string()
-          : emptyFiles == 1 ? std::string(" (the empty file stands for one)")
-                            : fmt::format(" ({} empty files stand for others)", emptyFiles)));
+      lacking.push_back(fmt::format(
+          "shard {}{}", fmt::join(missing, ", "),
+          selection.empty() ? std::string() : fmt::format(" of the run of {}", selection)));
   }
+  if (!lacking.empty())
+    throw UsageError(fmt::format(
+        "no results of {}{}: merge every shard's results file (an empty one counts), or run the "
+        "missing shard with the same --filter and --backend",
+        fmt::join(lacking, "; nor of "),
+        emptyFiles == 0   ? std::string()
+        : emptyFiles == 1 ? std::string(" (the empty file stands for one)")
+                          : fmt::format(" ({} empty files stand for others)", emptyFiles)));
 }
 
 }  // namespace
@@ -87,6 +99,7 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
   for (const auto& [key, value] : merged) {
     results.push_back(*value.first);
     results.back().shard.clear();  // the merge is the whole run
+    results.back().shardOf.clear();
   }
   return results;
 }

@@ -101,15 +101,16 @@ Command addMergeCommand(CLI::App& app) {
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     const std::vector<Case> catalog = expandCases(manifests, "");
     std::vector<ResultsFile> files;
-    bool incomplete = false;
+    std::vector<std::string> interrupted;  // the inputs of runs cut short
     for (const std::string& input : options->inputs) {
       bool inputIncomplete = false;
       // A shard may have no cases (more shards than cases): its file is
       // empty, and it is one of the shards all the same.
       files.push_back(
           {input, readFinishedResultsFile(input, &inputIncomplete, EmptyResults::Allowed)});
-      incomplete = incomplete || inputIncomplete;
+      if (inputIncomplete) interrupted.push_back(input);
     }
+    const bool incomplete = !interrupted.empty();
     if (std::all_of(files.begin(), files.end(),
                     [](const ResultsFile& f) { return f.results.empty(); }))
       throw UsageError(
@@ -132,10 +133,19 @@ Command addMergeCommand(CLI::App& app) {
     output.junit = options->junit;
     output.planned = results.size();
     if (incomplete)
-      output.incompleteBecause =
-          "merged from a shard that was interrupted: its cases not reached "
-          "are missing";
-    return reportResults(results, expectations, {}, output);
+      output.incompleteBecause = fmt::format(
+          "merged from a shard that was interrupted ({}): its cases not reached are missing",
+          fmt::join(interrupted, ", "));
+    const int code = reportResults(results, expectations, {}, output);
+    // A gate on the merged results must not pass on cases that never ran.
+    if (incomplete) {
+      fmt::print(
+          "\nsnell: {}; the merged results are marked incomplete: finish the shard (run it "
+          "again with --resume FILE) and merge again\n",
+          output.incompleteBecause);
+      return std::max(code, 1);
+    }
+    return code;
   };
 }
 

@@ -392,10 +392,16 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   if (run.oracleStore.empty()) openImagesMeanwhile();
   std::size_t finished = slots.size() - tasks.size();
   const std::string shardLabel = shard ? fmt::format("{}/{}", shard->index, shard->count) : "";
+  const std::string shardOf =
+      shard ? fmt::format("--filter {} --backend {}",
+                          shellWord(options.filter.empty() ? "*" : options.filter),
+                          shellWord(options.backend))
+            : "";
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
     CaseResult result = finishedCase;
     result.shard = shardLabel;
+    result.shardOf = shardOf;
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                  result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(jsonText(toJson(result)));

@@ -43,6 +43,10 @@ struct CaseResult {
   // "I/N" when the run was shard I of N (`run --shard`), so that a merge can
   // tell a shard that is missing; empty for a whole run.
   std::string shard;
+  // With `shard`: the selection the run was split from (its --filter and
+  // --backend as given), so that a merge can tell shards of different runs,
+  // whose cases together are not one run's.
+  std::string shardOf;
 
   // One vector (or scalar) per captured output per vertex.
   std::size_t vectorsChecked() const { return vertices * varyings.size(); }

@@ -70,6 +70,7 @@ nlohmann::json toJson(const CaseResult& r) {
                            {"phases", phasesJson(r.phases)},
                            {"reruns", reruns}};
   if (!r.shard.empty()) record["shard"] = r.shard;
+  if (!r.shardOf.empty()) record["shard_of"] = r.shardOf;
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
   return record;
 }
@@ -102,6 +103,8 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   if (j.contains("oracle_results")) r.oracleResults = jsonCount<int>(j.at("oracle_results"));
   if (j.contains("oracle_stored")) r.oracleStored = jsonCount<int>(j.at("oracle_stored"));
   if (j.contains("shard")) r.shard = field<std::string>(j, "shard");
+  // Absent from records written before shards named their selection.
+  if (j.contains("shard_of")) r.shardOf = field<std::string>(j, "shard_of");
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

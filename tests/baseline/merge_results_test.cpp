@@ -68,6 +68,44 @@ TEST(MergeResults, OverlapAndUnknownCaseAreUsageErrors) {
   EXPECT_THROW(mergeResults({{"1.jsonl", {result("zz", "gl")}}}, catalog), UsageError);
 }
 
+// A shard of another run (another --filter or --backend) does not stand in
+// for the missing shard of this one: its cases are not the ones missing.
+// Each backend sharded apart, as a run of its own, merges whole.
+TEST(MergeResults, AShardOfAnotherRunDoesNotStandForAMissingOne) {
+  const std::vector<Case> catalog = {imageCase("a", false), imageCase("b", false),
+                                     imageCase("c", false)};
+  const auto of = [](CaseResult r, const char* shard, const char* run) {
+    r.shard = shard;
+    r.shardOf = run;
+    return r;
+  };
+  const char* both = "--filter '*' --backend gl,vk";
+  const char* glOnly = "--filter '*' --backend gl";
+  const char* vkOnly = "--filter '*' --backend vk";
+  try {
+    mergeResults(
+        {{"1.jsonl", {of(result("a", "gl"), "1/3", both), of(result("a", "vk"), "1/3", both)}},
+         {"2.jsonl", {of(result("b", "gl"), "2/3", glOnly)}},
+         {"3.jsonl", {of(result("c", "gl"), "3/3", both), of(result("c", "vk"), "3/3", both)}}},
+        catalog);
+    ADD_FAILURE() << "merged shards of two runs";
+  } catch (const UsageError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("no results of shard 1/3, 3/3 of the run of --filter '*' --backend gl; "
+                           "nor of shard 2/3 of the run of --filter '*' --backend gl,vk"),
+              std::string::npos)
+        << message;
+  }
+  const std::vector<CaseResult> merged = mergeResults(
+      {{"gl1.jsonl", {of(result("a", "gl"), "1/2", glOnly), of(result("c", "gl"), "1/2", glOnly)}},
+       {"gl2.jsonl", {of(result("b", "gl"), "2/2", glOnly)}},
+       {"vk1.jsonl", {of(result("a", "vk"), "1/2", vkOnly), of(result("c", "vk"), "1/2", vkOnly)}},
+       {"vk2.jsonl", {of(result("b", "vk"), "2/2", vkOnly)}}},
+      catalog);
+  EXPECT_EQ(merged.size(), 6u);
+  for (const CaseResult& r : merged) EXPECT_TRUE(r.shard.empty() && r.shardOf.empty());
+}
+
 // Shards of two driver builds under one backend would be credited to one
 // of them: refused, naming both files and both builds. A record that names
 // no driver (a worker that died first) joins any; other backends may differ.

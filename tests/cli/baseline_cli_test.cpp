@@ -282,11 +282,16 @@ TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
       << readText(scratch / "r.xml");
 
   // Merged, the records stay marked: the merge of an interrupted run is
-  // no complete run.
+  // no complete run, and a gate on it does not pass (exit 1, naming it).
   const Outcome merged = snell(
       fmt::format("merge {} --shaders {} --json {} --junit {}", json.string(), shaders.string(),
                   (scratch / "merged.jsonl").string(), (scratch / "merged.xml").string()));
-  EXPECT_EQ(merged.code, 0) << merged.out;
+  EXPECT_EQ(merged.code, 1) << merged.out;
+  EXPECT_NE(merged.out.find("snell: merged from a shard that was interrupted (" + json.string() +
+                            "): its cases not reached are missing; the merged results are "
+                            "marked incomplete"),
+            std::string::npos)
+      << merged.out;
   EXPECT_NE(merged.out.find("is an interrupted run"), std::string::npos) << merged.out;
   const auto mergedRecords = records(scratch / "merged.jsonl");
   ASSERT_EQ(mergedRecords.size(), 3u);
