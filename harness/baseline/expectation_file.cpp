@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <set>
 #include <utility>
 
 #include "backends/backend_registry.h"
@@ -69,7 +70,14 @@ void readFile(const fs::path& file, const std::string& today, std::vector<Entry>
     if (number == 1 && raw.starts_with("\xEF\xBB\xBF")) raw.erase(0, 3);
     const std::string line = trim(raw);
     if (line.empty()) {
-      pending = {};  // metadata belongs to the entry directly below it
+      // Metadata belongs to the entry directly below it: kept across a
+      // blank line it would belong to none, and an expiry date would be
+      // dropped without a word.
+      if (!pending.reason.empty() || !pending.expires.empty() || !pending.added.empty() ||
+          !pending.link.empty())
+        badLine(file, number,
+                "a blank line below metadata comments (reason, link, added, expires): they "
+                "belong to the entry directly below them; remove the blank line");
       continue;
     }
     if (line[0] == '#') {
@@ -86,9 +94,16 @@ void readFile(const fs::path& file, const std::string& today, std::vector<Entry>
     entry.place = {file.string(), number, line};
     entry.metadata = std::exchange(pending, {});
     if constexpr (std::is_same_v<Entry, KnownFailure>) {
-      const auto comma = line.rfind(',');
+      const auto comma = line.find(',');
       if (comma == std::string::npos)
         badLine(file, number, "expected `case,Status` (a case id, a comma and a status)");
+      // Case ids hold no comma: a third field is a note the format has no
+      // place for.
+      if (line.find(',', comma + 1) != std::string::npos)
+        badLine(file, number,
+                fmt::format("`{}` has more than two fields; write `case,Status`, and a note "
+                            "as a `# reason:` comment above it",
+                            line));
       entry.caseId = trim(line.substr(0, comma));
       const std::string status = trim(line.substr(comma + 1));
       const std::optional<Status> parsed = statusFromName(status);
@@ -200,10 +215,16 @@ ExpectationSet loadExpectations(const fs::path& source, const std::vector<std::s
   set.source = source.string();
   if (fs::is_directory(source)) {
     requireBackendNamedFiles(source);
-    for (const std::string& backend : backends)
-      set.byBackend[backend] = readExpectationFiles(source / (backend + "-fails.txt"),
-                                                    source / (backend + "-flakes.txt"),
-                                                    source / (backend + "-skips.txt"), today);
+    // Every backend's files are read, those of backends this run leaves out
+    // too: a malformed or expired entry is found by every job that reads
+    // the folder, not only by the one that runs its backend.
+    for (const BackendEntry& entry : backendRegistry().entries()) {
+      const Expectations e = readExpectationFiles(source / (entry.name + "-fails.txt"),
+                                                  source / (entry.name + "-flakes.txt"),
+                                                  source / (entry.name + "-skips.txt"), today);
+      if (std::find(backends.begin(), backends.end(), entry.name) != backends.end())
+        set.byBackend[entry.name] = e;
+    }
     return set;
   }
   const std::string name = source.filename().string();
@@ -226,6 +247,38 @@ ExpectationSet loadExpectations(const fs::path& source, const std::vector<std::s
       "{}: not an expectations folder nor a file named PREFIX-fails.txt, PREFIX-flakes.txt or "
       "PREFIX-skips.txt",
       source.string()));
+}
+
+std::vector<std::string> entriesMatchingNoCase(const ExpectationSet& set,
+                                               const std::vector<std::string>& caseIds) {
+  const std::set<std::string> known(caseIds.begin(), caseIds.end());
+  std::set<std::string> said;  // FILE:LINE of the entries already noted
+  std::vector<std::string> notes;
+  const auto note = [&](const EntryPlace& place, const std::string& what) {
+    if (said.insert(place.where()).second) notes.push_back(place.where() + ": " + what);
+  };
+  for (const auto& [backend, e] : set.byBackend) {
+    for (const KnownFailure& f : e.fails) {
+      if (known.contains(f.caseId)) continue;
+      const auto slash = f.caseId.find('/');
+      const bool prefixed =
+          slash != std::string::npos && known.contains(f.caseId.substr(slash + 1));
+      note(f.place, prefixed ? fmt::format("`{}` is no case id; drop the backend in front of it "
+                                           "(`{}`)",
+                                           f.caseId, f.caseId.substr(slash + 1))
+                             : fmt::format("`{}` is no case of the catalog; check it against "
+                                           "`snell list`",
+                                           f.caseId));
+    }
+    for (const std::vector<CasePattern>* patterns : {&e.flakes, &e.skips})
+      for (const CasePattern& p : *patterns)
+        if (std::none_of(known.begin(), known.end(),
+                         [&](const std::string& id) { return std::regex_search(id, p.regex); }))
+          note(p.place, fmt::format("`{}` matches no case of the catalog; check it against "
+                                    "`snell list`",
+                                    p.pattern));
+  }
+  return notes;
 }
 
 std::string todayUtc() {

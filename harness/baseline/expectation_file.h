@@ -74,6 +74,14 @@ struct ExpectationSet {
 ExpectationSet loadExpectations(const std::filesystem::path& source,
                                 const std::vector<std::string>& backends, const std::string& today);
 
+// A note (FILE:LINE, what to do) for each entry that names or matches no
+// case of the catalog: a typo, or a case id with the backend in front of it
+// (`gl/orange-book/...`, as results.csv names it), which would otherwise
+// only be "absent" beside the failure it was meant to cover. Once per
+// entry, though a folder's entry serves one backend and a prefix's all.
+std::vector<std::string> entriesMatchingNoCase(const ExpectationSet& set,
+                                               const std::vector<std::string>& caseIds);
+
 // One file's kind is given by the caller; exposed for the tests.
 Expectations readExpectationFiles(const std::filesystem::path& fails,
                                   const std::filesystem::path& flakes,

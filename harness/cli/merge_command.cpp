@@ -18,6 +18,7 @@
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/message.h"
 #include "runner/cross_api_check.h"
 #include "runner/image_check.h"
 
@@ -123,8 +124,13 @@ Command addMergeCommand(CLI::App& app) {
       if (std::find(backends.begin(), backends.end(), r.backend) == backends.end())
         backends.push_back(r.backend);
     ExpectationSet expectations;
-    if (!options->expectations.empty())
+    if (!options->expectations.empty()) {
       expectations = loadExpectations(options->expectations, backends, todayUtc());
+      std::vector<std::string> caseIds;
+      for (const Case& c : catalog) caseIds.push_back(c.id);
+      for (const std::string& note : entriesMatchingNoCase(expectations, caseIds))
+        printMessage(stderr, "snell: note: {}\n", note);
+    }
     requireImagesToCompare(pendingBackendPairs(catalog, results), options->out);
     checkAcrossApis(catalog, options->out, results);
     writeFileAtomically(options->json, toResultsJsonLines(results, incomplete));

@@ -300,8 +300,13 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       if (shard->contains(k)) mine.push_back(std::move(run.cases[k]));
     run.cases = std::move(mine);
   }
-  if (!options.expectations.empty())
+  if (!options.expectations.empty()) {
     run.expectations = loadExpectations(options.expectations, backends, todayUtc());
+    std::vector<std::string> caseIds;
+    for (const Case& c : expandCases(run.manifests, "")) caseIds.push_back(c.id);
+    for (const std::string& note : entriesMatchingNoCase(run.expectations, caseIds))
+      printMessage(stderr, "snell: note: {}\n", note);
+  }
   requireNothingToResumeIsLost(options);
   std::map<std::string, CaseResult> resumed;
   if (!options.resume.empty())

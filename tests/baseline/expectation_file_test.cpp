@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/errors.h"
@@ -113,6 +114,73 @@ TEST(ExpectationFile, MalformedEntriesNameFileAndLine) {
     const std::string error = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
     EXPECT_NE(error.find(name + ":"), std::string::npos) << text << " -> " << error;
   }
+}
+
+// An expiry date above a blank line belonged to no entry and was dropped,
+// so the entry below never expired; a note as a third field was read as
+// the status.
+TEST(ExpectationFile, MetadataAboveABlankLineAndAThirdFieldAreRefused) {
+  testing::TempDir dir;
+  dir.write("gl-fails.txt", "# reason: flaky on CI\n# expires: 2020-01-01\n\na/b/c,Fail\n");
+  const std::string orphan = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(orphan.find("gl-fails.txt:3: a blank line below metadata comments"), std::string::npos)
+      << orphan;
+  dir.write("gl-fails.txt", "a/b/c,Fail,see issue 12\n");
+  const std::string third = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(third.find("gl-fails.txt:1: `a/b/c,Fail,see issue 12` has more than two fields"),
+            std::string::npos)
+      << third;
+  // Free text above a blank line is a comment like any other.
+  dir.write("gl-fails.txt", "# known failures of gl\n\na/b/c,Fail\n");
+  EXPECT_EQ(usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); }), "");
+}
+
+// A folder's files for a backend the run leaves out are read too: their
+// malformed or expired entries are found by every job that reads the
+// folder, though their entries apply only where that backend runs.
+TEST(ExpectationFile, EveryBackendsFilesInAFolderAreChecked) {
+  testing::TempDir dir;
+  dir.write("gl-fails.txt", "a/b/c,Fail\n");
+  dir.write("vk-fails.txt", "# expires: 2020-01-01\na/b/c,Fail\n");
+  const std::string expired = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(expired.find("vk-fails.txt:2: this entry expired"), std::string::npos) << expired;
+  dir.write("vk-fails.txt", "a/b/c,Fail\n");
+  dir.write("vk-flakes.txt", "((\n");
+  const std::string bad = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
+  EXPECT_NE(bad.find("vk-flakes.txt:1:"), std::string::npos) << bad;
+  std::filesystem::remove(dir.path() / "vk-flakes.txt");
+  const ExpectationSet set = loadExpectations(dir.path(), {"gl"}, kToday);
+  EXPECT_NE(set.of("gl").knownFailure("a/b/c"), nullptr);
+  EXPECT_EQ(set.byBackend.count("vk"), 0u);
+}
+
+// An entry for no case of the catalog (a typo, or the backend in front of
+// the id as results.csv writes it) is noted with its line, once.
+TEST(ExpectationFile, EntriesForNoCaseAreNoted) {
+  testing::TempDir dir;
+  dir.write("gl-fails.txt",
+            "a/b/c,Fail\n"
+            "a/b/d,Fail\n"
+            "gl/a/b/e,Fail\n");
+  dir.write("gl-skips.txt", "^a/\nnowhere\n");
+  dir.write("vk-fails.txt", "a/b/d,Fail\n");
+  const ExpectationSet set = loadExpectations(dir.path(), {"gl", "vk"}, kToday);
+  const std::vector<std::string> notes = entriesMatchingNoCase(set, {"a/b/c", "a/b/e"});
+  ASSERT_EQ(notes.size(), 4u) << ::testing::PrintToString(notes);
+  const auto has = [&](const std::string& text) {
+    return std::any_of(notes.begin(), notes.end(),
+                       [&](const std::string& n) { return n.find(text) != std::string::npos; });
+  };
+  EXPECT_TRUE(has("gl-fails.txt:2: `a/b/d` is no case of the catalog"));
+  EXPECT_TRUE(
+      has("gl-fails.txt:3: `gl/a/b/e` is no case id; drop the backend in front of it "
+          "(`a/b/e`)"));
+  EXPECT_TRUE(has("gl-skips.txt:2: `nowhere` matches no case"));
+  EXPECT_TRUE(has("vk-fails.txt:1: `a/b/d` is no case of the catalog"));
+  // The same file serving every backend (a prefix) is noted once per line.
+  const auto prefix = dir.write("one-fails.txt", "a/b/zz,Fail\n");
+  EXPECT_EQ(entriesMatchingNoCase(loadExpectations(prefix, {"gl", "vk"}, kToday), {"a/b/c"}).size(),
+            1u);
 }
 
 TEST(ExpectationFile, SourceThatIsNeitherFolderNorPrefixFileIsAnError) {
