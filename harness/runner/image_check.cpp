@@ -146,6 +146,11 @@ ImageCheck checkImage(Backend& backend, const Case& c, const Scene& scene,
       }();
       check.comparisons.push_back(
           compareTimed(store, "golden", outcome.image, golden.image, reference.mask, c.spec.image));
+      if (check.comparisons.back().verdict != ImageVerdict::Pass)
+        check.goldenAdvice =
+            fmt::format("golden {}: if the change is intended, bless the new image with `{}`",
+                        goldenFiles(options.goldenDir, c.id, goldenKey).image.string(),
+                        blessCommand(name, options.blessFlags, c.id));
       writeHeatMapTimed(heatMapPath(options.outDir, c.id, name, "golden"), outcome.image,
                         golden.image, reference.mask, c.spec.image.fail);
     } catch (const UsageError& error) {

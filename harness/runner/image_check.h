@@ -40,6 +40,9 @@ struct ImageCheck {
   std::vector<ImageComparison> comparisons;  // reference, then golden
   std::string goldenProblem;                 // a missing or unreadable golden
   std::string goldenNote;                    // no golden yet for this driver: not a failure
+  // A golden the image is off: which file, and the command that blesses
+  // the image if the change is intended.
+  std::string goldenAdvice;
 };
 
 // The samplerCube uniforms a manifest binds to the scene's environment.

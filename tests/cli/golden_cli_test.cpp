@@ -93,6 +93,16 @@ TEST_F(GoldenCli, OnePixelBeyondFailFails) {
   EXPECT_NE(o.output.find("pixels over 0.004; heat map " + heatMap.string()), std::string::npos)
       << o.output;
   EXPECT_TRUE(fs::exists(heatMap));
+  // It names the golden and the command that blesses the image, should the
+  // change be intended, as a missing golden's message does.
+  const std::string advice = fmt::format(
+      "golden {}: if the change is intended, bless the new image with `snell bless --backend gl "
+      "--shaders {} --golden {} --filter '{}'`",
+      goldenExr().string(), (dir_ / "shaders").string(), (dir_ / "golden").string(), kCase);
+  EXPECT_NE(o.output.find(advice), std::string::npos) << o.output;
+  // The summary's image error is the golden's, by which the row fails (0.005
+  // on one pixel), not the reference's.
+  EXPECT_NE(o.output.find("5.00e-03"), std::string::npos) << o.output;
 }
 
 TEST_F(GoldenCli, OnePixelBetweenWarnAndFailIsAQualityWarning) {

@@ -60,11 +60,17 @@ ImageComparison comparisonFromJson(const nlohmann::json& j) {
   return c;
 }
 
-// The largest error against the CPU reference, or "-" for a case that draws nothing.
-std::string referenceErrorCell(const CaseResult& r) {
+// The largest error of a comparison that did not pass (against the golden,
+// say, on a row that fails by it), else the largest against the CPU
+// reference; "-" for a case that draws nothing.
+std::string imageErrorCell(const CaseResult& r) {
+  const ImageComparison* shown = nullptr;
   for (const ImageComparison& c : r.images)
-    if (c.against == "reference") return fmt::format("{:.2e}", c.maxError);
-  return "-";
+    if (c.verdict != ImageVerdict::Pass && (!shown || c.maxError > shown->maxError)) shown = &c;
+  if (!shown)
+    for (const ImageComparison& c : r.images)
+      if (c.against == "reference") shown = &c;
+  return shown ? fmt::format("{:.2e}", shown->maxError) : "-";
 }
 
 }  // namespace
@@ -115,6 +121,7 @@ void ImageCheckKind::run(const Case& c, const ResolvedBindings& bindings, CheckE
                     comparison.maxError, comparison.maxX, comparison.maxY, comparison.failed,
                     comparison.compared, c.spec.image.fail, heatMap);
   }
+  if (!check.goldenAdvice.empty()) result.message += check.goldenAdvice + "\n";
   if (!check.goldenNote.empty()) result.message += check.goldenNote + "\n";
   if (!check.goldenProblem.empty()) {
     result.status = worstOf(result.status, Status::Fail);
@@ -134,7 +141,7 @@ void ImageCheckKind::readJson(const nlohmann::json& record, CaseResult& r) const
 }
 
 std::vector<SummaryColumn> ImageCheckKind::summaryColumns() const {
-  return {{"image err", 10, referenceErrorCell}};
+  return {{"image err", 10, imageErrorCell}};
 }
 
 std::string ImageCheckKind::junitMessage(const CaseResult& r) const {
