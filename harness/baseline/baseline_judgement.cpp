@@ -11,17 +11,13 @@
 namespace snell {
 namespace {
 
-bool passedOnRerun(const CaseResult& r) {
-  return std::any_of(r.reruns.begin(), r.reruns.end(), [](Status s) { return !isFailure(s); });
-}
-
 Outcome judge(const Expectations& e, const CaseResult& r, JudgedCase& judged) {
   judged.knownFailure = e.knownFailure(r.caseId);
   if (!isFailure(r.status)) return judged.knownFailure ? Outcome::UnexpectedPass : Outcome::Pass;
   if (judged.knownFailure && judged.knownFailure->status == r.status) return Outcome::ExpectedFail;
   judged.flakePattern = e.flake(r.caseId);
   if (judged.flakePattern) return Outcome::KnownFlake;
-  if (passedOnRerun(r)) return Outcome::Flake;
+  if (r.passedOnRerun()) return Outcome::Flake;
   return Outcome::UnexpectedFail;
 }
 

@@ -69,14 +69,17 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
       continue;
     }
     const CaseResult& now = *it->second;
-    const StatusChange change{key, old->status, now.status};
-    if (old->status == now.status) ++c.unchanged;
+    // A flake passes the gate in `run` and `merge`: judged here by the same
+    // status, and listed apart.
+    const Status was = old->gateStatus(), is = now.gateStatus();
+    if (now.passedOnRerun()) c.flakes.push_back({key, now.status, is});
+    const StatusChange change{key, was, is};
+    if (was == is) ++c.unchanged;
     // Support that comes or goes is a change, not better or worse; but a
     // case a build newly claims to support and then fails is a regression.
-    else if (now.status == Status::NotSupported ||
-             (old->status == Status::NotSupported && !isFailure(now.status)))
+    else if (is == Status::NotSupported || (was == Status::NotSupported && !isFailure(is)))
       c.changes.push_back(change);
-    else if (worstOf(old->status, now.status) == now.status)
+    else if (worstOf(was, is) == is)
       c.regressions.push_back(change);
     else
       c.fixes.push_back(change);
@@ -92,15 +95,19 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
 
 void printComparison(std::ostream& out, const RunComparison& c, const DriftRule& rule) {
   fmt::print(out,
-             "{} -> {}: {} regressions, {} fixes, {} changes, {} new, {} removed, {} drifted "
-             "(grew more than {}x), {} with the same status (drifted ones included)\n",
-             c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.added.size(),
-             c.removed.size(), c.drift.size(), rule.factor, c.unchanged);
+             "{} -> {}: {} regressions, {} fixes, {} changes, {} flakes, {} new, {} removed, {} "
+             "drifted (grew more than {}x), {} with the same status (drifted ones and flakes "
+             "included)\n",
+             c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
+             c.added.size(), c.removed.size(), c.drift.size(), rule.factor, c.unchanged);
   for (const auto& [word, list] : {std::pair{"regression", &c.regressions},
                                    std::pair{"fix", &c.fixes}, std::pair{"change", &c.changes}})
     for (const StatusChange& s : *list)
       fmt::print(out, "  {:<10}  {}: {} -> {}\n", word, s.key, statusName(s.from),
                  statusName(s.to));
+  for (const StatusChange& s : c.flakes)
+    fmt::print(out, "  {:<10}  {}: {}, then {} on a rerun\n", "flake", s.key, statusName(s.from),
+               statusName(s.to));
   for (const std::string& key : c.added) fmt::print(out, "  {:<10}  {}\n", "new", key);
   for (const std::string& key : c.removed) fmt::print(out, "  {:<10}  {}\n", "removed", key);
   for (const Drift& d : c.drift)
@@ -120,6 +127,7 @@ nlohmann::json comparisonToJson(const RunComparison& c) {
           {"regressions", changesToJson(c.regressions)},
           {"fixes", changesToJson(c.fixes)},
           {"changes", changesToJson(c.changes)},
+          {"flakes", changesToJson(c.flakes)},
           {"new", c.added},
           {"removed", c.removed},
           {"drift", drift},

@@ -1,9 +1,9 @@
 #pragma once
 // Two runs side by side, in piglit's words: each result present in both is
 // a regression (status worse), a fix (better), a change (a backend enabled
-// or disabled: NotSupported on one side) or unchanged; the others are new
-// or removed. Metric drift: a worst slack or an image error against the
-// reference that grew by more than a stated factor, whatever the status.
+// or disabled: NotSupported on one side) or unchanged, by the status the
+// gate goes by (a flake's is Pass); the others are new or removed. Metric drift: a worst slack or
+// an image error against the reference that grew by more than a stated factor, whatever the status.
 #include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
@@ -44,6 +44,10 @@ struct Drift {
 struct RunComparison {
   std::string from, to;
   std::vector<StatusChange> regressions, fixes, changes;
+  // Results of the later run that failed and then passed on a rerun, from
+  // the first status to Pass: flakes, which pass the gate as `run` and
+  // `merge` judge them. Each side is judged by its gate status.
+  std::vector<StatusChange> flakes;
   std::vector<std::string> added, removed;  // piglit's "new" and "removed"
   std::vector<Drift> drift;
   std::size_t unchanged = 0;

@@ -35,6 +35,12 @@ using kainjow::mustache::list;
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "inf"; }
 
+// A result's status in counts and the matrix: a failure that passed on a
+// rerun is a Flake there, as results.csv calls it, not the failure.
+std::string tallyName(const CaseResult& r) {
+  return r.passedOnRerun() ? "Flake" : statusName(r.status);
+}
+
 std::string listingOf(const std::string& caseId) {
   const auto slash = caseId.rfind('/');
   return slash == std::string::npos ? caseId : caseId.substr(0, slash);
@@ -166,7 +172,7 @@ class ReportBuilder {
     std::size_t latest = 0;
     for (const auto& [column, r] : byCase_.at(id)) latest = std::max(latest, columns_[column].run);
     for (const auto& [column, r] : byCase_.at(id))
-      if (columns_[column].run == latest && isFailure(r->status)) return true;
+      if (columns_[column].run == latest && isFailure(r->gateStatus())) return true;
     return false;
   }
 
@@ -176,7 +182,7 @@ class ReportBuilder {
     list runs;
     for (const ReportRun& run : runs_) {
       std::map<std::string, std::size_t> counts;
-      for (const CaseResult& r : run.results) ++counts[statusName(r.status)];
+      for (const CaseResult& r : run.results) ++counts[tallyName(r)];
       list tally;
       for (const auto& [status, n] : counts) {
         data t;
@@ -219,6 +225,8 @@ class ReportBuilder {
       caseRow("fix", f.key, statusName(f.from), statusName(f.to));
     for (const StatusChange& x : c.changes)
       caseRow("change", x.key, statusName(x.from), statusName(x.to));
+    for (const StatusChange& f : c.flakes)
+      caseRow("flake (a rerun passed)", f.key, statusName(f.from), statusName(f.to));
     for (const std::string& key : c.added) caseRow("new", key, "", "");
     for (const std::string& key : c.removed) caseRow("removed", key, "", "");
     for (const Drift& d : c.drift)
@@ -227,10 +235,10 @@ class ReportBuilder {
     section.set("from", c.from);
     section.set("to", c.to);
     section.set("counts",
-                fmt::format("{} regressions, {} fixes, {} changes, {} new, {} removed, {} "
-                            "drifted, {} unchanged",
-                            c.regressions.size(), c.fixes.size(), c.changes.size(), c.added.size(),
-                            c.removed.size(), c.drift.size(), c.unchanged));
+                fmt::format("{} regressions, {} fixes, {} changes, {} flakes, {} new, {} "
+                            "removed, {} drifted, {} unchanged",
+                            c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
+                            c.added.size(), c.removed.size(), c.drift.size(), c.unchanged));
     section.set("rows", rows);
     section.set("has_rows", !rows.empty());
     return section;
@@ -254,9 +262,10 @@ class ReportBuilder {
       const std::string name = listingOf(id);
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
       for (const auto& [column, r] : byCase_.at(id)) {
-        ++counts[name][column][statusName(r->status)];
+        ++counts[name][column][tallyName(*r)];
         const auto it = worst[name].find(column);
-        worst[name][column] = it == worst[name].end() ? r->status : worstOf(it->second, r->status);
+        worst[name][column] =
+            it == worst[name].end() ? r->gateStatus() : worstOf(it->second, r->gateStatus());
       }
     }
     list rows;
@@ -348,7 +357,7 @@ class ReportBuilder {
           cell.set("slack", "");
         } else {
           const CaseResult& r = *it->second;
-          cell.set("status", statusName(r.status));
+          cell.set("status", tallyName(r));
           std::string text = r.componentsChecked() ? "slack " + number(r.worstSlack()) : "-";
           // An image that did not pass is what the status is about: its
           // largest error and pixels over the fail threshold are shown too.
@@ -452,7 +461,8 @@ class ReportBuilder {
     for (const auto& [column, r] : byCase_.at(id)) {
       ResultPage rp;
       rp.fields.set("column", columns_[column].name);
-      rp.fields.set("status", statusName(r->status));
+      rp.fields.set("status", r->statusText());
+      rp.fields.set("status_class", tallyName(*r));
       if (r->status != Status::Pass) rp.fields.set("message", r->message);
       list varyings, failures;
       for (const VaryingCheck& v : r->varyings) {

@@ -1,5 +1,8 @@
 #include "runner/case_result.h"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 
 namespace snell {
@@ -26,6 +29,23 @@ double CaseResult::worstSlack() const {
   double worst = 0;
   for (const VaryingCheck& v : varyings) worst = std::max(worst, v.worstSlack);
   return worst;
+}
+
+bool CaseResult::passedOnRerun() const {
+  return isFailure(status) &&
+         std::any_of(reruns.begin(), reruns.end(), [](Status s) { return !isFailure(s); });
+}
+
+Status CaseResult::gateStatus() const { return passedOnRerun() ? Status::Pass : status; }
+
+std::string CaseResult::statusText() const {
+  if (reruns.empty()) return statusName(status);
+  std::vector<std::string> names;
+  for (Status s : reruns) names.push_back(statusName(s));
+  if (passedOnRerun())
+    return fmt::format("{}, then {} on a rerun (Flake)", statusName(status),
+                       fmt::join(names, ", "));
+  return fmt::format("{} (reruns: {})", statusName(status), fmt::join(names, ", "));
 }
 
 }  // namespace snell

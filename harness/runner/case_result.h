@@ -54,6 +54,13 @@ struct CaseResult {
   std::size_t componentsUndefined() const;
   std::size_t componentsFailed() const;
   double worstSlack() const;
+  // A failure that passed on a rerun: a flake, which passes the gate.
+  bool passedOnRerun() const;
+  // The status the gate goes by: Pass for a flake, else `status`.
+  Status gateStatus() const;
+  // The status as a person reads it: "Timeout, then Pass on a rerun
+  // (Flake)" for a flake, "Fail (reruns: Fail)" for a failure rerun.
+  std::string statusText() const;
 };
 
 }  // namespace snell

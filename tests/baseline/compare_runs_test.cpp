@@ -55,6 +55,38 @@ TEST(CompareRuns, NewlySupportedAndFailingIsARegression) {
   EXPECT_EQ(c.changes[1].key, "gl works");
 }
 
+// A failure that passed on a rerun passes the gate in `run` and `merge`:
+// compared, it is a flake, not a regression; one that failed its reruns
+// too is a regression.
+TEST(CompareRuns, AFlakeIsNoRegression) {
+  const RunSide before =
+      side("a.jsonl", {result("flaky", "gl", Status::Pass), result("broken", "gl", Status::Pass),
+                       result("settled", "gl", Status::Timeout)});
+  CaseResult flaky = result("flaky", "gl", Status::Timeout);
+  flaky.reruns = {Status::Pass};
+  CaseResult broken = result("broken", "gl", Status::Timeout);
+  broken.reruns = {Status::Timeout};
+  CaseResult settled = result("settled", "gl", Status::Timeout);
+  settled.reruns = {Status::Timeout, Status::Pass};
+  const RunComparison c =
+      compareRuns(before, side("b.jsonl", {flaky, broken, settled}), DriftRule{});
+  ASSERT_EQ(c.regressions.size(), 1u);
+  EXPECT_EQ(c.regressions[0].key, "gl broken");
+  ASSERT_EQ(c.fixes.size(), 1u);  // a timeout before, a flake now: it passes the gate
+  EXPECT_EQ(c.fixes[0].key, "gl settled");
+  ASSERT_EQ(c.flakes.size(), 2u);
+  EXPECT_EQ(c.flakes[0].key, "gl flaky");
+  EXPECT_EQ(c.flakes[0].from, Status::Timeout);
+  std::ostringstream text;
+  printComparison(text, c, DriftRule{});
+  EXPECT_NE(text.str().find("flake       gl flaky: Timeout, then Pass on a rerun"),
+            std::string::npos)
+      << text.str();
+  EXPECT_EQ(comparisonToJson(c)["flakes"].size(), 2u);
+  EXPECT_EQ(flaky.statusText(), "Timeout, then Pass on a rerun (Flake)");
+  EXPECT_EQ(broken.statusText(), "Timeout (reruns: Timeout)");
+}
+
 TEST(CompareRuns, EveryCategory) {
   const RunSide before =
       side("a.jsonl", {result("same", "gl", Status::Pass), result("worse", "gl", Status::Pass),
@@ -95,8 +127,9 @@ TEST(CompareRuns, EveryCategory) {
 
   std::ostringstream text;
   printComparison(text, c, DriftRule{});
-  EXPECT_NE(text.str().find("2 regressions, 1 fixes, 1 changes, 1 new, 1 removed, 2 drifted"),
-            std::string::npos)
+  EXPECT_NE(
+      text.str().find("2 regressions, 1 fixes, 1 changes, 0 flakes, 1 new, 1 removed, 2 drifted"),
+      std::string::npos)
       << text.str();
   EXPECT_NE(text.str().find("regression  gl worse: Pass -> Fail"), std::string::npos) << text.str();
   const nlohmann::json json = comparisonToJson(c);

@@ -230,6 +230,21 @@ TEST(HtmlReport, TwoRunsShowTheirRegressionsAndFixes) {
   EXPECT_NE(fixed.find("<td>fix</td>" + row), std::string::npos) << fixed;
   EXPECT_EQ(fixed.find("<div class=\"case failing\""), std::string::npos)
       << "fixed in the last run, yet marked failing";
+  // A timeout that passed on its rerun is a flake, as run and merge judge
+  // it: no regression, not marked failing, and its page says what happened.
+  nlohmann::json flake = record("gl", "Timeout", 0);
+  flake["reruns"] = {"Pass"};
+  std::ofstream(dir / "flaky.jsonl") << flake.dump() << "\n";
+  const std::string flaky = reportOf("passing.jsonl", "flaky.jsonl");
+  EXPECT_NE(flaky.find("0 regressions, 0 fixes, 0 changes, 1 flakes"), std::string::npos) << flaky;
+  EXPECT_NE(flaky.find("<td>flake (a rerun passed)</td>" + row +
+                       "<td class=\"Timeout\">Timeout</td><td class=\"Pass\">Pass</td>"),
+            std::string::npos)
+      << flaky;
+  EXPECT_EQ(flaky.find("<div class=\"case failing\""), std::string::npos);
+  EXPECT_NE(flaky.find("<span class=\"Flake\">&nbsp;Timeout, then Pass on a rerun (Flake)&nbsp;"),
+            std::string::npos)
+      << flaky;
   fs::remove_all(dir);
 }
 
