@@ -402,9 +402,24 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                           shellWord(options.filter.empty() ? "*" : options.filter),
                           shellWord(options.backend))
             : "";
+  std::map<std::string, const Case*> caseById;
+  for (const Case& c : run.cases) caseById[c.id] = &c;
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
     CaseResult result = finishedCase;
+    // A case whose worker was lost (a timeout, a crash) comes back with its
+    // id alone: what the catalog and the driver probe know is filled in,
+    // and its time is charged to Other, so its phases add up to it.
+    if (result.title.empty())
+      if (const auto c = caseById.find(result.caseId); c != caseById.end()) {
+        result.title = c->second->manifest->title;
+        result.sourceFile = c->second->manifest->source.file;
+        result.sourceWhere = c->second->manifest->source.where;
+      }
+    if (result.driver.renderer.empty())
+      if (const auto d = drivers.find(result.backend); d != drivers.end())
+        result.driver = d->second;
+    if (result.phases.total() == 0.0) result.phases[Phase::Other] = result.seconds;
     result.shard = shardLabel;
     result.shardOf = shardOf;
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,

@@ -91,6 +91,18 @@ TEST(Isolation, EndlessListingTimesOutOnBothBackendsAndOthersPass) {
     EXPECT_EQ(result["status"],
               key.find("faults/endless-loop") != std::string::npos ? "Timeout" : "Pass")
         << key;
+  // A timed-out case keeps what the catalog and the driver probe know (its
+  // record had an empty title, source and driver), and its phases add up to
+  // its time (all zero, against seconds of it).
+  for (const char* backend : {"gl", "vk"}) {
+    const auto& lost = results.at(std::string(backend) + " faults/endless-loop/sweep");
+    EXPECT_FALSE(lost["title"].get<std::string>().empty()) << lost;
+    EXPECT_FALSE(lost["source"]["file"].get<std::string>().empty()) << lost;
+    EXPECT_FALSE(lost["driver"]["renderer"].get<std::string>().empty()) << lost;
+    double phases = 0;
+    for (const auto& [phase, seconds] : lost["phases"].items()) phases += seconds.get<double>();
+    EXPECT_NEAR(phases, lost["seconds"].get<double>(), 1e-6) << lost;
+  }
   fs::remove_all(shaders);
 }
 
