@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <system_error>
+#include <vector>
 
 #include "core/errors.h"
 
@@ -46,6 +47,21 @@ fs::path temporaryPathFor(const fs::path& path) {
   fs::path temporary = path;
   temporary += fmt::format(".tmp{}", getpid());
   return temporary;
+}
+
+void removeTemporaryFilesOf(pid_t pid, const fs::path& folder) {
+  const std::string mark = fmt::format(".tmp{}", pid);
+  std::error_code error;
+  std::vector<fs::path> left;
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const std::size_t at = name.rfind(mark);
+    // The mark ends the name or comes before the extension kept after it.
+    if (at == std::string::npos || at == 0) continue;
+    const std::size_t after = at + mark.size();
+    if (after == name.size() || name[after] == '.') left.push_back(entry.path());
+  }
+  for (const fs::path& path : left) fs::remove(path, error);
 }
 
 void writeFileAtomically(const fs::path& path, const std::string& text) {

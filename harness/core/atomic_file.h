@@ -1,6 +1,8 @@
 #pragma once
 // Result files are never left half-written under their final name: they are
 // written beside it and renamed into place.
+#include <sys/types.h>
+
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -39,5 +41,10 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& t
 
 // The temporary file writeFileAtomically writes beside `path` first.
 std::filesystem::path temporaryPathFor(const std::filesystem::path& path);
+
+// Removes the temporary files process `pid` left in `folder` (FILE.tmpPID,
+// and FILE.tmpPID.EXT as the image module names them): a process killed
+// while it wrote one never renamed it into place. Errors are ignored.
+void removeTemporaryFilesOf(pid_t pid, const std::filesystem::path& folder);
 
 }  // namespace snell

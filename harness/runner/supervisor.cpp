@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
+#include <filesystem>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "core/atomic_file.h"
 #include "runner/case_result_json.h"
 #include "runner/worker_process.h"
 
@@ -153,9 +155,19 @@ class Supervision {
     return std::chrono::duration<double>(Clock::now() - slot.started).count();
   }
 
+  // A worker killed or dead in the middle of a case may have been writing
+  // one of its files: the temporary it wrote first is removed, so that it
+  // does not stay among the case's images.
+  void removeWhatItWasWriting(const Slot& slot) const {
+    if (slot.task && !options_.outDir.empty())
+      removeTemporaryFilesOf(slot.worker->pid(),
+                             std::filesystem::path(options_.outDir) / tasks_[*slot.task].caseId);
+  }
+
   void workerDied(Slot& slot) {
     const std::string how = slot.worker->finish(false);
     const std::string tail = slot.worker->stderrTail(10);
+    removeWhatItWasWriting(slot);
     slot.worker.reset();
     if (!slot.task) return;
     finishTask(slot,
@@ -167,6 +179,7 @@ class Supervision {
   void timedOut(Slot& slot, double seconds) {
     slot.worker->finish(true);
     const std::string tail = slot.worker->stderrTail(10);
+    removeWhatItWasWriting(slot);
     slot.worker.reset();
     finishTask(slot, lostCase(tasks_[*slot.task], Status::Timeout,
                               fmt::format("no result after {:.1f} s (limit {:.1f} s); worker "

@@ -23,6 +23,7 @@ class WorkerProcess {
   bool stdoutClosed() const { return outFd_ < 0; }
   int stdoutFd() const { return outFd_; }
   int stderrFd() const { return errFd_; }
+  pid_t pid() const { return pid_; }
   // Sends SIGKILL without waiting, so several hung workers die at once.
   void kill();
   // Kills (SIGKILL) if still running and reaps; returns a description of

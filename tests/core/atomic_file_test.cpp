@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "core/errors.h"
@@ -34,6 +35,23 @@ TEST(AtomicFile, ReplacesTheWholeFile) {
   writeFileAtomically(dir / "r.jsonl", "new\n");
   EXPECT_EQ(text(dir / "r.jsonl"), "new\n");
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+  fs::remove_all(dir);
+}
+
+// A worker killed while it wrote leaves its temporaries (FILE.tmpPID, and
+// FILE.tmpPID.EXT as the image module names them): those of that process
+// are removed, another process's and the files themselves are kept.
+TEST(AtomicFile, TheTemporariesOfAKilledProcessAreRemoved) {
+  const fs::path dir = scratch();
+  for (const char* name : {"gl.exr", "gl.exr.tmp740.exr", "mask.png.tmp740.png", "r.jsonl.tmp740",
+                           "gl.exr.tmp7401.exr", "vk.exr.tmp741.exr", ".tmp740"})
+    std::ofstream(dir / name) << "x";
+  removeTemporaryFilesOf(740, dir);
+  std::set<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir)) left.insert(entry.path().filename());
+  EXPECT_EQ(left, (std::set<std::string>{"gl.exr", "gl.exr.tmp7401.exr", "vk.exr.tmp741.exr",
+                                         ".tmp740"}));
+  removeTemporaryFilesOf(740, dir / "no-such-folder");  // nothing to do, no error
   fs::remove_all(dir);
 }
 
