@@ -65,7 +65,7 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
   for (const auto& [key, old] : a) {
     const auto it = b.find(key);
     if (it == b.end()) {
-      c.removed.push_back(key);
+      (to.incomplete ? c.notReached : c.removed).push_back(key);
       continue;
     }
     const CaseResult& now = *it->second;
@@ -95,11 +95,15 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
 
 void printComparison(std::ostream& out, const RunComparison& c, const DriftRule& rule) {
   fmt::print(out,
-             "{} -> {}: {} regressions, {} fixes, {} changes, {} flakes, {} new, {} removed, {} "
-             "drifted (grew more than {}x), {} with the same status (drifted ones and flakes "
+             "{} -> {}: {} regressions, {} fixes, {} changes, {} flakes, {} new, {} removed, {}"
+             "{} drifted (grew more than {}x), {} with the same status (drifted ones and flakes "
              "included)\n",
              c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
-             c.added.size(), c.removed.size(), c.drift.size(), rule.factor, c.unchanged);
+             c.added.size(), c.removed.size(),
+             c.notReached.empty() ? std::string()
+                                  : fmt::format("{} not reached (the later run was interrupted), ",
+                                                c.notReached.size()),
+             c.drift.size(), rule.factor, c.unchanged);
   for (const auto& [word, list] : {std::pair{"regression", &c.regressions},
                                    std::pair{"fix", &c.fixes}, std::pair{"change", &c.changes}})
     for (const StatusChange& s : *list)
@@ -110,6 +114,7 @@ void printComparison(std::ostream& out, const RunComparison& c, const DriftRule&
                statusName(s.to));
   for (const std::string& key : c.added) fmt::print(out, "  {:<10}  {}\n", "new", key);
   for (const std::string& key : c.removed) fmt::print(out, "  {:<10}  {}\n", "removed", key);
+  for (const std::string& key : c.notReached) fmt::print(out, "  {:<10}  {}\n", "not reached", key);
   for (const Drift& d : c.drift)
     fmt::print(out, "  {:<10}  {}: {} {} -> {}{}\n", "drift", d.key, d.metric, number(d.from),
                number(d.to), d.from > 0 ? fmt::format(" (x{:.1f})", d.to / d.from) : "");
@@ -130,6 +135,7 @@ nlohmann::json comparisonToJson(const RunComparison& c) {
           {"flakes", changesToJson(c.flakes)},
           {"new", c.added},
           {"removed", c.removed},
+          {"not_reached", c.notReached},
           {"drift", drift},
           {"unchanged", c.unchanged}};
 }

@@ -20,6 +20,9 @@ struct RunSide {
   std::string label;    // as given
   std::string backend;  // empty: every backend, results keyed by backend and case
   std::vector<CaseResult> results;
+  // An interrupted run (its records marked incomplete, or a FILE.partial):
+  // a result it lacks was not reached, not removed.
+  bool incomplete = false;
 };
 
 // Values below these floors are noise, not drift: a slack under 1 % of the
@@ -49,6 +52,7 @@ struct RunComparison {
   // `merge` judge them. Each side is judged by its gate status.
   std::vector<StatusChange> flakes;
   std::vector<std::string> added, removed;  // piglit's "new" and "removed"
+  std::vector<std::string> notReached;      // lacking from an interrupted later run
   std::vector<Drift> drift;
   std::size_t unchanged = 0;
 };

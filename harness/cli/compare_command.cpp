@@ -30,7 +30,7 @@ RunSide readSide(const std::string& text) {
       throw UsageError(
           fmt::format("{}: name a backend after the @ (FILE@gl), or drop the @", text));
   }
-  side.results = readFinishedResultsFile(path);
+  side.results = readFinishedResultsFile(path, &side.incomplete);
   if (!side.backend.empty() &&
       std::none_of(side.results.begin(), side.results.end(),
                    [&](const CaseResult& r) { return r.backend == side.backend; })) {

@@ -87,6 +87,28 @@ TEST(CompareRuns, AFlakeIsNoRegression) {
   EXPECT_EQ(broken.statusText(), "Timeout (reruns: Timeout)");
 }
 
+// Cases an interrupted later run did not reach are not "removed": they are
+// listed as not reached, in the text and in the JSON.
+TEST(CompareRuns, CasesAnInterruptedRunDidNotReachAreNotRemoved) {
+  const RunSide before =
+      side("a.jsonl", {result("ran", "gl", Status::Pass), result("later", "gl", Status::Pass)});
+  RunSide after = side("b.jsonl", {result("ran", "gl", Status::Pass)});
+  after.incomplete = true;
+  const RunComparison c = compareRuns(before, after, DriftRule{});
+  EXPECT_TRUE(c.removed.empty());
+  ASSERT_EQ(c.notReached.size(), 1u);
+  EXPECT_EQ(c.notReached[0], "gl later");
+  std::ostringstream text;
+  printComparison(text, c, DriftRule{});
+  EXPECT_NE(text.str().find("0 removed, 1 not reached (the later run was interrupted)"),
+            std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("not reached  gl later"), std::string::npos) << text.str();
+  EXPECT_EQ(comparisonToJson(c)["not_reached"], nlohmann::json::array({"gl later"}));
+  after.incomplete = false;
+  EXPECT_EQ(compareRuns(before, after, DriftRule{}).removed.size(), 1u);
+}
+
 TEST(CompareRuns, EveryCategory) {
   const RunSide before =
       side("a.jsonl", {result("same", "gl", Status::Pass), result("worse", "gl", Status::Pass),
