@@ -98,6 +98,7 @@ Command addMergeCommand(CLI::App& app) {
     std::vector<OutputPath> inputs;
     for (const std::string& input : options->inputs)
       inputs.push_back({"the input " + input, input});
+    checkInputsOnce(inputs);
     checkOutputs(outputs, {}, inputs);
     const std::vector<Manifest> manifests = loadManifests(options->shaders);
     const std::vector<Case> catalog = expandCases(manifests, "");

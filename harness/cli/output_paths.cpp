@@ -240,6 +240,14 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
   }
 }
 
+void checkInputsOnce(const std::vector<OutputPath>& inputs) {
+  for (std::size_t i = 0; i < inputs.size(); ++i)
+    for (std::size_t j = i + 1; j < inputs.size(); ++j)
+      if (identity(inputs[i].path) == identity(inputs[j].path))
+        throw UsageError(fmt::format("{} and {} are one file, given twice; give each file once",
+                                     inputs[i].path.string(), inputs[j].path.string()));
+}
+
 void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden) {
   for (const OutputPath& file : files)
     if (isGoldenFile(golden.path, file.path))

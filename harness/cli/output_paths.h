@@ -29,6 +29,11 @@ std::vector<OutputPath> resultsFileOutputs(const std::string& option,
 void checkOutputs(const std::vector<OutputPath>& files, const std::vector<OutputPath>& folders = {},
                   const std::vector<OutputPath>& inputs = {});
 
+// Throws UsageError when one file is given as two inputs (merge's results
+// files: an empty one would count as two shards, and a non-empty one would
+// be said to overlap itself).
+void checkInputsOnce(const std::vector<OutputPath>& inputs);
+
 // Throws UsageError when an output file is one of the goldens under
 // `golden` (run's or bless's --golden): a results file named there would
 // replace a blessed image or its metadata.

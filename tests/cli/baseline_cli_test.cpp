@@ -213,11 +213,19 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
       fmt::format("merge {0} --json {1} --junit {1}", job1, (scratch / "same.jsonl").string()));
   EXPECT_EQ(onEachOther.code, 2) << onEachOther.out;
   EXPECT_FALSE(fs::exists(scratch / "same.jsonl"));
-  // Overlapping shards are refused.
-  const Outcome overlap =
+  // One file given twice is refused as such (an empty one counted as two
+  // shards), and overlapping shards are refused.
+  const Outcome twice =
       snell(fmt::format("merge {} {} --json {}", (scratch / "job1.jsonl").string(),
                         (scratch / "job1.jsonl").string(), (scratch / "bad.jsonl").string()));
+  EXPECT_EQ(twice.code, 2) << twice.out;
+  EXPECT_NE(twice.out.find("are one file, given twice"), std::string::npos) << twice.out;
+  fs::copy_file(scratch / "job1.jsonl", scratch / "job1-copy.jsonl");
+  const Outcome overlap =
+      snell(fmt::format("merge {} {} --json {}", (scratch / "job1.jsonl").string(),
+                        (scratch / "job1-copy.jsonl").string(), (scratch / "bad.jsonl").string()));
   EXPECT_EQ(overlap.code, 2) << overlap.out;
+  EXPECT_NE(overlap.out.find("shards must not overlap"), std::string::npos) << overlap.out;
   // A damaged image was compared as a difference between the drivers (a
   // CompatibilityWarning on both, exit 0): it is exit 2, naming it.
   fs::path damaged;
