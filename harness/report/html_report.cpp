@@ -35,6 +35,23 @@ using kainjow::mustache::list;
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "inf"; }
 
+// HTML's escaping, and the C0 control characters (a driver's log, a
+// manifest's title) spelled out as \xNN: HTML forbids them in a document,
+// and a raw one makes the page a parse error.
+std::string htmlEscaped(const std::string& text) {
+  const std::string escaped = kainjow::mustache::html_escape<std::string>(text);
+  std::string out;
+  out.reserve(escaped.size());
+  for (const char c : escaped) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte < 0x20 && c != '\t' && c != '\n' && c != '\r') || byte == 0x7F)
+      out += fmt::format("\\x{:02x}", byte);
+    else
+      out.push_back(c);
+  }
+  return out;
+}
+
 // A result's status in counts and the matrix: a failure that passed on a
 // rerun is a Flake there, as results.csv calls it, not the failure.
 std::string tallyName(const CaseResult& r) {
@@ -145,6 +162,7 @@ class ReportBuilder {
     stats.cases = order.size();
     kainjow::mustache::mustache tmpl{std::string(kReportTemplate)};
     if (!tmpl.is_valid()) throw SetupError("report template: " + tmpl.error_message());
+    tmpl.set_custom_escape(htmlEscaped);
     return tmpl.render(page);
   }
 

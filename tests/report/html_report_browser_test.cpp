@@ -198,6 +198,29 @@ TEST(HtmlReport, AFolderWithoutTheRunsImagesIsSaidOnThePage) {
   fs::remove_all(dir);
 }
 
+// HTML forbids C0 control characters: one in a title or a driver's message
+// (a log's ESC, a manifest's U+0001) is spelled out, not written raw.
+TEST(HtmlReport, ControlCharactersAreSpelledOut) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-ctl-{}", getpid());
+  fs::remove_all(dir);
+  fs::create_directories(dir / "images");
+  nlohmann::json r = record("gl", "Fail", 0);
+  r["title"] = "Fresnel \x01 <b>&";
+  r["message"] = "worker stderr: \x1b[31mabort\x1b[0m";
+  std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
+  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
+                                             (dir / "results.jsonl").string(),
+                                             (dir / "html").string(), (dir / "images").string()));
+  ASSERT_EQ(code, 0) << out;
+  const std::string html = readText(dir / "html" / "index.html");
+  for (const char c : html)
+    EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r')
+        << "a raw control character " << static_cast<int>(c);
+  EXPECT_NE(html.find("Fresnel \\x01 &lt;b&gt;&amp;"), std::string::npos);
+  EXPECT_NE(html.find("\\x1b[31mabort\\x1b[0m"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // A report of two runs showed neither regressions nor fixes: every case
 // that failed in either run had the failing border and came first, and the
 // tally added both runs' counts. The page now says what changed from the
