@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "backends/backend_registry.h"
 #include "baseline/results_file.h"
 #include "cli/commands.h"
 #include "cli/option_checks.h"
@@ -27,6 +28,7 @@ Command addReportCommand(CLI::App& app) {
     std::string images = "snell-out";
     std::string shaders = defaultShadersDir();
     std::string sweep;
+    std::string golden = defaultGoldenDir();
   };
   auto options = std::make_shared<Options>();
   sub->add_option("results", options->results,
@@ -41,6 +43,10 @@ Command addReportCommand(CLI::App& app) {
                   "snell-out)")
       ->check(nonEmptyPath());
   sub->add_option("--shaders", options->shaders, "Folder of listings (titles, fail thresholds)")
+      ->check(CLI::ExistingDirectory);
+  sub->add_option("--golden", options->golden,
+                  "The last run's golden folder: its comparisons with goldens are pictured "
+                  "(default: the repository's)")
       ->check(CLI::ExistingDirectory);
   sub->add_option("--sweep", options->sweep,
                   "A `snell sweep --out` folder: each listing's breaks and the sweep's charts "
@@ -69,6 +75,9 @@ Command addReportCommand(CLI::App& app) {
     report.imagesDir = options->images;
     report.catalog = expandCases(manifests, "");
     report.sweepDir = options->sweep;
+    report.goldenDir = options->golden;
+    for (const BackendEntry& entry : backendRegistry().entries())
+      report.goldenKeys[entry.name] = entry.goldenKey;
     report.title = fmt::format("{}", fmt::join(options->results, ", "));
     // A report that fails leaves no folder behind that it made itself.
     const std::filesystem::path made = firstMissingFolder(options->out);

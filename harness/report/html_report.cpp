@@ -18,6 +18,7 @@
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "golden/golden_store.h"
 #include "report/data_uri.h"
 #include "report/gnuplot_batch.h"
 #include "report/heat_map_chart.h"
@@ -462,6 +463,43 @@ class ReportBuilder {
     return "";
   }
 
+  // The golden the run compared `r`'s image with, and the heat map of the
+  // two, when the golden in --golden is the one it compared (its largest
+  // difference is the one `r` recorded): a failure by the golden showed no
+  // picture of it.
+  void addGoldenPictures(const std::string& id, const CaseResult& r, const Image& rendered,
+                         const std::vector<bool>& masked, double fail, ResultPage& rp,
+                         ReportStats& stats) {
+    const auto key = options_.goldenKeys.find(r.backend);
+    if (options_.goldenDir.empty() || key == options_.goldenKeys.end()) return;
+    for (const ImageComparison& c : r.images) {
+      if (c.against != "golden" || !c.problem.empty()) continue;
+      const GoldenFiles files = goldenFiles(options_.goldenDir, id, key->second);
+      const Image* golden = image(files.image);
+      if (!golden || !sameSize(*golden, rendered)) return;
+      const double there = largestDifference(rendered, *golden, masked);
+      if (std::abs(there - c.maxError) > 1e-4 * std::max(there, c.maxError) + 1e-7) {
+        rp.fields.set("golden_note",
+                      fmt::format("No golden picture: {} is not the golden this run compared "
+                                  "with (its largest difference there is {:.3g}; the run "
+                                  "recorded {:.3g}). Pass --golden the run's --golden folder.",
+                                  files.image.string(), there, c.maxError));
+        return;
+      }
+      if (c.verdict != ImageVerdict::Pass && fs::exists(files.preview))
+        rp.pictures.push_back(
+            {fmt::format("golden ({})", key->second), "picture", files.preview, "image/png"});
+      HeatMapSummary summary;
+      const fs::path png = addHeatMap(batch_, fmt::format("{} against its golden", r.backend),
+                                      rendered, *golden, masked, fail, summary);
+      rp.pictures.push_back({fmt::format("{} against its golden: {} pixels over {:g}", r.backend,
+                                         summary.overThreshold, fail),
+                             "", png, "image/png"});
+      ++stats.heatMaps;
+      return;
+    }
+  }
+
   CasePage casePage(const std::string& id, ReportStats& stats) {
     CasePage page;
     page.fields.set("id", id);
@@ -564,6 +602,7 @@ class ReportBuilder {
                                  "", png, "image/png"});
           ++stats.heatMaps;
         }
+        if (rendered) addGoldenPictures(id, *r, *rendered, masked, fail, rp, stats);
       }
       page.results.push_back(std::move(rp));
     }

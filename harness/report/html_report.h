@@ -8,6 +8,7 @@
 // for every pair of backends that rendered the case; with a sweep, where
 // each listing breaks (per backend and class) and the sweep's charts.
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ struct ReportOptions {
   std::string title;
   // A `snell sweep --out` folder: each listing's breaks beside it. Empty: none.
   std::filesystem::path sweepDir;
+  // The golden folder the last run compared with, and each backend's golden
+  // key in it: a comparison with a golden is pictured as the reference's
+  // is. Empty: none pictured.
+  std::filesystem::path goldenDir;
+  std::map<std::string, std::string> goldenKeys;
 };
 
 struct ReportStats {

@@ -198,6 +198,43 @@ TEST(HtmlReport, AFolderWithoutTheRunsImagesIsSaidOnThePage) {
   fs::remove_all(dir);
 }
 
+// A failure by the golden showed no picture of it: the golden and the heat
+// map of the image against it are drawn, when --golden holds the golden
+// the run compared with, and said not to be drawn when it holds another.
+TEST(HtmlReport, AComparisonWithTheGoldenIsPictured) {
+  const fs::path dir = fs::temp_directory_path() / fmt::format("snell-report-gold-{}", getpid());
+  fs::remove_all(dir);
+  writeImages(dir / "images" / kCase);
+  fs::create_directories(dir / "golden" / kCase);
+  // The golden is the reference: gl is off it by 0.02 on 13 pixels.
+  fs::copy_file(dir / "images" / kCase / "reference.exr", dir / "golden" / kCase / "gl.exr");
+  fs::copy_file(dir / "images" / kCase / "reference.png", dir / "golden" / kCase / "gl.png");
+  nlohmann::json r = record("gl", "Fail", 13);
+  nlohmann::json golden = r["images"][0];
+  golden["against"] = "golden";
+  r["images"].push_back(golden);
+  std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
+  const auto reportWith = [&](const fs::path& goldenDir) {
+    const auto [code, out] =
+        shell(fmt::format("{} report {} -o {} --images {} --golden {}", SNELL_BINARY,
+                          (dir / "results.jsonl").string(), (dir / "html").string(),
+                          (dir / "images").string(), goldenDir.string()));
+    EXPECT_EQ(code, 0) << out;
+    return readText(dir / "html" / "index.html");
+  };
+  const std::string html = reportWith(dir / "golden");
+  EXPECT_NE(html.find("gl against its golden: 13 pixels over 0.004"), std::string::npos);
+  EXPECT_NE(html.find("golden (gl)"), std::string::npos);
+  // Another golden (vk's image in its place) is not drawn under this run's
+  // numbers.
+  fs::copy_file(dir / "images" / kCase / "vk.exr", dir / "golden" / kCase / "gl.exr",
+                fs::copy_options::overwrite_existing);
+  const std::string other = reportWith(dir / "golden");
+  EXPECT_EQ(other.find("gl against its golden"), std::string::npos);
+  EXPECT_NE(other.find("is not the golden this run compared with"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 // HTML forbids C0 control characters: one in a title or a driver's message
 // (a log's ESC, a manifest's U+0001) is spelled out, not written raw.
 TEST(HtmlReport, ControlCharactersAreSpelledOut) {
