@@ -53,13 +53,13 @@ void removeTemporaryFilesOf(pid_t pid, const fs::path& folder) {
   const std::string mark = fmt::format(".tmp{}", pid);
   std::error_code error;
   std::vector<fs::path> left;
-  for (const fs::directory_entry& entry : fs::directory_iterator(folder, error)) {
-    const std::string name = entry.path().filename().string();
+  for (fs::directory_iterator it(folder, error), end; !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
     const std::size_t at = name.rfind(mark);
     // The mark ends the name or comes before the extension kept after it.
     if (at == std::string::npos || at == 0) continue;
     const std::size_t after = at + mark.size();
-    if (after == name.size() || name[after] == '.') left.push_back(entry.path());
+    if (after == name.size() || name[after] == '.') left.push_back(it->path());
   }
   for (const fs::path& path : left) fs::remove(path, error);
 }

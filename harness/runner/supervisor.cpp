@@ -158,16 +158,18 @@ class Supervision {
   // A worker killed or dead in the middle of a case may have been writing
   // one of its files: the temporary it wrote first is removed, so that it
   // does not stay among the case's images.
-  void removeWhatItWasWriting(const Slot& slot) const {
+  // `pid` is read before the worker is reaped, which forgets it.
+  void removeWhatItWasWriting(const Slot& slot, pid_t pid) const {
     if (slot.task && !options_.outDir.empty())
-      removeTemporaryFilesOf(slot.worker->pid(),
+      removeTemporaryFilesOf(pid,
                              std::filesystem::path(options_.outDir) / tasks_[*slot.task].caseId);
   }
 
   void workerDied(Slot& slot) {
+    const pid_t pid = slot.worker->pid();
     const std::string how = slot.worker->finish(false);
     const std::string tail = slot.worker->stderrTail(10);
-    removeWhatItWasWriting(slot);
+    removeWhatItWasWriting(slot, pid);
     slot.worker.reset();
     if (!slot.task) return;
     finishTask(slot,
@@ -177,9 +179,10 @@ class Supervision {
   }
 
   void timedOut(Slot& slot, double seconds) {
+    const pid_t pid = slot.worker->pid();
     slot.worker->finish(true);
     const std::string tail = slot.worker->stderrTail(10);
-    removeWhatItWasWriting(slot);
+    removeWhatItWasWriting(slot, pid);
     slot.worker.reset();
     finishTask(slot, lostCase(tasks_[*slot.task], Status::Timeout,
                               fmt::format("no result after {:.1f} s (limit {:.1f} s); worker "

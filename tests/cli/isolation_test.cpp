@@ -117,8 +117,10 @@ TEST_P(IsolationSignal, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
   const fs::path json = shaders / "results.jsonl";
   // One worker, the endless case first: it is the case running when the
   // worker is killed; the Fresnel cases after it need a fresh worker.
-  const pid_t pid = spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120", "--reruns",
-                                "0", "--shaders", shaders.string(), "--json", json.string()});
+  const fs::path out = shaders / "out";
+  const pid_t pid =
+      spawnSnell({"run", "-j", "1", "--backend", "gl", "--timeout", "120", "--reruns", "0",
+                  "--shaders", shaders.string(), "--out", out.string(), "--json", json.string()});
   std::vector<pid_t> workers;
   for (int k = 0; k < 200 && workers.empty(); ++k) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
@@ -126,12 +128,22 @@ TEST_P(IsolationSignal, WorkerKilledFromOutsideIsACrashOfItsCaseOnly) {
   }
   ASSERT_EQ(workers.size(), 1u);
   std::this_thread::sleep_for(std::chrono::seconds(1));  // well inside the endless case
+  // What a worker killed while writing its image leaves: removed with it;
+  // another process's temporary is kept.
+  const fs::path caseOut = out / "faults" / "endless-loop" / "sweep";
+  fs::create_directories(caseOut);
+  const fs::path left = caseOut / fmt::format("gl.exr.tmp{}.exr", workers[0]);
+  const fs::path others = caseOut / fmt::format("gl.exr.tmp{}1.exr", workers[0]);
+  std::ofstream(left) << "half an image";
+  std::ofstream(others) << "another process's";
   kill(workers[0], signal);
   EXPECT_EQ(exitCode(pid), 1);
   const auto results = resultsByKey(json);
   ASSERT_EQ(results.size(), 1 + kFresnelCases);
   const auto& killed = results.at("gl faults/endless-loop/sweep");
   EXPECT_EQ(killed["status"], "Crash");
+  EXPECT_FALSE(fs::exists(left));
+  EXPECT_TRUE(fs::exists(others));
   EXPECT_NE(killed["message"].get<std::string>().find(fmt::format("signal {}", signal)),
             std::string::npos)
       << killed;
