@@ -9,6 +9,7 @@
 #include <cstring>
 #include <system_error>
 
+#include "backends/backend_registry.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "golden/golden_store.h"
@@ -249,11 +250,14 @@ void checkInputsOnce(const std::vector<OutputPath>& inputs) {
 }
 
 void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden) {
+  std::vector<std::string> keys;
+  for (const BackendEntry& entry : backendRegistry().entries()) keys.push_back(entry.goldenKey);
   for (const OutputPath& file : files)
-    if (isGoldenFile(golden.path, file.path))
+    if (isGoldenFile(golden.path, file.path, keys))
       throw UsageError(fmt::format(
-          "{} {} is a golden file under {} {}: writing it would replace the blessed golden; "
-          "name a file outside the golden folder's case folders",
+          "{} {} is a golden's file under {} {} (a case folder, and a backend's golden key): "
+          "writing it would replace the golden, or bless would write over it; name a file "
+          "outside the golden folder's case folders",
           file.option, file.path.string(), golden.option, golden.path.string()));
 }
 

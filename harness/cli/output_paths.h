@@ -34,9 +34,10 @@ void checkOutputs(const std::vector<OutputPath>& files, const std::vector<Output
 // be said to overlap itself).
 void checkInputsOnce(const std::vector<OutputPath>& inputs);
 
-// Throws UsageError when an output file is one of the goldens under
-// `golden` (run's or bless's --golden): a results file named there would
-// replace a blessed image or its metadata.
+// Throws UsageError when an output file is, or would be, one of a golden's
+// files under `golden` (run's or bless's --golden): a results file named
+// there would replace a blessed image or its metadata, or be replaced by
+// one that bless writes.
 void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden);
 
 // The outermost folder of `path` that does not exist yet, or empty when all

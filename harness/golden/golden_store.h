@@ -6,6 +6,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "compare/image_io.h"
 #include "core/image.h"
@@ -31,12 +32,14 @@ struct Golden {
 bool hasAnyGolden(const std::filesystem::path& root, const std::string& backend,
                   const std::filesystem::path& skip = {});
 
-// Whether `path` is one of a golden's files under `root`: ROOT/CASE/KEY.exr,
-// .png or .json where KEY.exr and KEY.json are there (a golden that has
-// been blessed, whatever its case and backend: a results file's
-// FILE.timing.json has no FILE.timing.exr beside it). Another command's output written
-// there would replace it, though goldens change only through `snell bless`.
-bool isGoldenFile(const std::filesystem::path& root, const std::filesystem::path& path);
+// Whether `path` is, or would be, one of a golden's files under `root`:
+// ROOT/CASE/KEY.exr, .png or .json, KEY one of `goldenKeys` (whether or
+// not the golden is there yet: bless writes it after the run). Another
+// command's output written there would replace a golden, or be replaced by
+// one, though goldens change only through `snell bless`. A results file's
+// FILE.timing.json, or any file in the root itself, is not one.
+bool isGoldenFile(const std::filesystem::path& root, const std::filesystem::path& path,
+                  const std::vector<std::string>& goldenKeys);
 
 // Throws UsageError naming the file, what is wrong (missing, unreadable,
 // truncated, wrong size, metadata that is not a JSON object) and what to

@@ -424,13 +424,16 @@ TEST_F(GoldenCli, AResultsFileOnAGoldensFilesIsRefusedAndTheGoldenKept) {
   };
   // The golden's metadata as run's results, its preview as run's JUnit
   // file, its image as bless's results: each refused before any case runs.
+  // And where a golden of another backend, with none yet, would go: bless
+  // would write over the results.
   const std::vector<std::pair<std::string, std::string>> attempts = {
       {"run", "--json " + files.metadata.string()},
       {"run", "--junit " + files.preview.string()},
-      {"bless", "--json " + files.image.string()}};
+      {"bless", "--json " + files.image.string()},
+      {"bless", "--json " + goldenFiles(dir_ / "golden", kCase, "gl-softpipe").metadata.string()}};
   for (const auto& [command, outputs] : attempts) {
     EXPECT_EQ(snellWith(command, outputs), 2) << command << " " << outputs << "\n" << readText(log);
-    EXPECT_NE(readText(log).find("is a golden file under --golden"), std::string::npos)
+    EXPECT_NE(readText(log).find("is a golden's file under --golden"), std::string::npos)
         << readText(log);
     EXPECT_FALSE(fs::exists(dir_ / "out" / kCase)) << "a case ran: " << outputs;
   }
