@@ -26,30 +26,48 @@ namespace {
 // nothing and are not counted.
 void requireEveryShard(const std::vector<ResultsFile>& files) {
   std::size_t emptyFiles = 0;
-  // (the run's selection, shard count N) -> indices I
+  // (the run's selection, shard count N) -> indices I. Records written
+  // before records named their run (no shard_of) count for every run of
+  // their N.
   std::map<std::pair<std::string, std::size_t>, std::set<std::size_t>> seen;
+  std::map<std::size_t, std::set<std::size_t>> unnamed;  // N -> indices I
   for (const ResultsFile& file : files) {
     if (file.results.empty()) ++emptyFiles;
     for (const CaseResult& r : file.results)
       if (!r.shard.empty()) {
         const Shard shard = parseShard(r.shard);
-        seen[{r.shardOf, shard.count}].insert(shard.index);
+        if (r.shardOf.empty())
+          unnamed[shard.count].insert(shard.index);
+        else
+          seen[{r.shardOf, shard.count}].insert(shard.index);
       }
   }
+  for (const auto& [count, indices] : unnamed) {
+    bool joined = false;
+    for (auto& [run, named] : seen)
+      if (run.second == count) {
+        named.insert(indices.begin(), indices.end());
+        joined = true;
+      }
+    if (!joined) seen[{"", count}] = indices;
+  }
   // Every run that lacks shards is named: where a shard of another run was
-  // given in place of one, both runs are.
+  // given in place of one, both runs are. An empty file is one shard of one
+  // run: it stands for one missing shard in all.
   std::vector<std::string> lacking;
+  std::size_t missingShards = 0;
   for (const auto& [run, indices] : seen) {
     const auto& [selection, count] = run;
     std::vector<std::string> missing;
     for (std::size_t i = 1; i <= count; ++i)
       if (!indices.contains(i)) missing.push_back(fmt::format("{}/{}", i, count));
-    if (missing.size() > emptyFiles)
-      lacking.push_back(fmt::format(
-          "shard {}{}", fmt::join(missing, ", "),
-          selection.empty() ? std::string() : fmt::format(" of the run of {}", selection)));
+    if (missing.empty()) continue;
+    missingShards += missing.size();
+    lacking.push_back(fmt::format(
+        "shard {}{}", fmt::join(missing, ", "),
+        selection.empty() ? std::string() : fmt::format(" of the run of {}", selection)));
   }
-  if (!lacking.empty())
+  if (missingShards > emptyFiles)
     throw UsageError(fmt::format(
         "no results of {}{}: merge every shard's results file (an empty one counts), or run the "
         "missing shard with the same --filter and --backend",

@@ -315,6 +315,14 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       resumed[resultKey(r)] = std::move(r);
     }
 
+  // Each record names its shard and the run it was split from (a merge
+  // tells a missing shard by them); a resumed one is this command's too.
+  const std::string shardLabel = shard ? fmt::format("{}/{}", shard->index, shard->count) : "";
+  const std::string shardOf =
+      shard ? fmt::format("--filter {} --backend {}",
+                          shellWord(options.filter.empty() ? "*" : options.filter),
+                          shellWord(options.backend))
+            : "";
   // One slot per result the run gives, in order: a case already finished in
   // the resumed file keeps its result; the others become tasks.
   std::vector<Task> tasks;
@@ -332,6 +340,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       if (done != resumed.end()) {
         // Its image is compared with the other backends' after the run.
         resumedImages = resumedImages || c.spec.has("image");
+        done->second.shard = shardLabel;
+        done->second.shardOf = shardOf;
         slots.emplace_back(std::move(done->second));
         resumed.erase(done);
         continue;
@@ -396,12 +406,6 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   };
   if (run.oracleStore.empty()) openImagesMeanwhile();
   std::size_t finished = slots.size() - tasks.size();
-  const std::string shardLabel = shard ? fmt::format("{}/{}", shard->index, shard->count) : "";
-  const std::string shardOf =
-      shard ? fmt::format("--filter {} --backend {}",
-                          shellWord(options.filter.empty() ? "*" : options.filter),
-                          shellWord(options.backend))
-            : "";
   std::map<std::string, const Case*> caseById;
   for (const Case& c : run.cases) caseById[c.id] = &c;
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {

@@ -104,6 +104,20 @@ TEST(MergeResults, AShardOfAnotherRunDoesNotStandForAMissingOne) {
       catalog);
   EXPECT_EQ(merged.size(), 6u);
   for (const CaseResult& r : merged) EXPECT_TRUE(r.shard.empty() && r.shardOf.empty());
+  // One empty file is one shard: it does not stand for a missing shard of
+  // each of two runs.
+  EXPECT_THROW(mergeResults({{"gl1.jsonl", {of(result("a", "gl"), "1/2", glOnly)}},
+                             {"vk1.jsonl", {of(result("a", "vk"), "1/2", vkOnly)}},
+                             {"empty.jsonl", {}}},
+                            catalog),
+               UsageError);
+  // Records from before shard_of (a resumed old .partial) count for the
+  // runs of their shard count.
+  const std::vector<CaseResult> mixed = mergeResults(
+      {{"1.jsonl", {of(result("a", "gl"), "1/2", ""), of(result("c", "gl"), "1/2", glOnly)}},
+       {"2.jsonl", {of(result("b", "gl"), "2/2", glOnly)}}},
+      catalog);
+  EXPECT_EQ(mixed.size(), 3u);
 }
 
 // Shards of two driver builds under one backend would be credited to one
