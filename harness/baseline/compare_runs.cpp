@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <fmt/ostream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -72,7 +73,10 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
     // A flake passes the gate in `run` and `merge`: judged here by the same
     // status, and listed apart.
     const Status was = old->gateStatus(), is = now.gateStatus();
-    if (now.passedOnRerun()) c.flakes.push_back({key, now.status, is});
+    if (now.passedOnRerun())
+      c.flakes.push_back({key, now.status,
+                          *std::find_if(now.reruns.begin(), now.reruns.end(),
+                                        [](Status s) { return !isFailure(s); })});
     const StatusChange change{key, was, is};
     if (was == is) ++c.unchanged;
     // Support that comes or goes is a change, not better or worse; but a
@@ -96,8 +100,8 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
 void printComparison(std::ostream& out, const RunComparison& c, const DriftRule& rule) {
   fmt::print(out,
              "{} -> {}: {} regressions, {} fixes, {} changes, {} flakes, {} new, {} removed, {}"
-             "{} drifted (grew more than {}x), {} with the same status (drifted ones and flakes "
-             "included)\n",
+             "{} drifted (grew more than {}x), {} with the same status to the gate (drifted ones "
+             "included, and flakes that passed before)\n",
              c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
              c.added.size(), c.removed.size(),
              c.notReached.empty() ? std::string()

@@ -48,8 +48,9 @@ struct RunComparison {
   std::string from, to;
   std::vector<StatusChange> regressions, fixes, changes;
   // Results of the later run that failed and then passed on a rerun, from
-  // the first status to Pass: flakes, which pass the gate as `run` and
-  // `merge` judge them. Each side is judged by its gate status.
+  // the first status to the rerun's that passed: flakes, which pass the
+  // gate as `run` and `merge` judge them. Each side is judged by its gate
+  // status.
   std::vector<StatusChange> flakes;
   std::vector<std::string> added, removed;  // piglit's "new" and "removed"
   std::vector<std::string> notReached;      // lacking from an interrupted later run

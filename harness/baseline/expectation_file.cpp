@@ -70,14 +70,15 @@ void readFile(const fs::path& file, const std::string& today, std::vector<Entry>
     if (number == 1 && raw.starts_with("\xEF\xBB\xBF")) raw.erase(0, 3);
     const std::string line = trim(raw);
     if (line.empty()) {
-      // Metadata belongs to the entry directly below it: kept across a
-      // blank line it would belong to none, and an expiry date would be
-      // dropped without a word.
-      if (!pending.reason.empty() || !pending.expires.empty() || !pending.added.empty() ||
-          !pending.link.empty())
+      // Metadata belongs to the entry directly below it: across a blank
+      // line it belongs to none. An expiry date would then be dropped
+      // without a word, and the entry would never expire; a reason or link
+      // of a header is a comment like any other.
+      if (!pending.expires.empty())
         badLine(file, number,
-                "a blank line below metadata comments (reason, link, added, expires): they "
-                "belong to the entry directly below them; remove the blank line");
+                "a blank line below an `# expires:` comment: it belongs to the entry directly "
+                "below it; remove the blank line");
+      pending = {};
       continue;
     }
     if (line[0] == '#') {

@@ -220,9 +220,9 @@ class ReportBuilder {
   // From the first run to the last, as `snell compare` judges them:
   // regressions, fixes, changes, new and removed results, and drift.
   data changes() const {
-    const RunComparison c =
-        compareRuns({runs_.front().label, "", runs_.front().results},
-                    {runs_.back().label, "", runs_.back().results}, DriftRule{});
+    const RunComparison c = compareRuns(
+        {runs_.front().label, "", runs_.front().results, runs_.front().incomplete},
+        {runs_.back().label, "", runs_.back().results, runs_.back().incomplete}, DriftRule{});
     list rows;
     const auto caseRow = [&](const std::string& kind, const std::string& key,
                              const std::string& from, const std::string& to) {
@@ -248,16 +248,17 @@ class ReportBuilder {
       caseRow("flake (a rerun passed)", f.key, statusName(f.from), statusName(f.to));
     for (const std::string& key : c.added) caseRow("new", key, "", "");
     for (const std::string& key : c.removed) caseRow("removed", key, "", "");
+    for (const std::string& key : c.notReached) caseRow("not reached", key, "", "");
     for (const Drift& d : c.drift)
       caseRow("drift: " + d.metric, d.key, number(d.from), number(d.to));
     data section;
     section.set("from", c.from);
     section.set("to", c.to);
-    section.set("counts",
-                fmt::format("{} regressions, {} fixes, {} changes, {} flakes, {} new, {} "
-                            "removed, {} drifted, {} unchanged",
-                            c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
-                            c.added.size(), c.removed.size(), c.drift.size(), c.unchanged));
+    section.set("counts", fmt::format("{} regressions, {} fixes, {} changes, {} flakes, {} new, {} "
+                                      "removed, {} not reached, {} drifted, {} unchanged",
+                                      c.regressions.size(), c.fixes.size(), c.changes.size(),
+                                      c.flakes.size(), c.added.size(), c.removed.size(),
+                                      c.notReached.size(), c.drift.size(), c.unchanged));
     section.set("rows", rows);
     section.set("has_rows", !rows.empty());
     return section;

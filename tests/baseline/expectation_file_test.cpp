@@ -123,16 +123,20 @@ TEST(ExpectationFile, MetadataAboveABlankLineAndAThirdFieldAreRefused) {
   testing::TempDir dir;
   dir.write("gl-fails.txt", "# reason: flaky on CI\n# expires: 2020-01-01\n\na/b/c,Fail\n");
   const std::string orphan = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
-  EXPECT_NE(orphan.find("gl-fails.txt:3: a blank line below metadata comments"), std::string::npos)
+  EXPECT_NE(orphan.find("gl-fails.txt:3: a blank line below an `# expires:` comment"),
+            std::string::npos)
       << orphan;
   dir.write("gl-fails.txt", "a/b/c,Fail,see issue 12\n");
   const std::string third = usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); });
   EXPECT_NE(third.find("gl-fails.txt:1: `a/b/c,Fail,see issue 12` has more than two fields"),
             std::string::npos)
       << third;
-  // Free text above a blank line is a comment like any other.
-  dir.write("gl-fails.txt", "# known failures of gl\n\na/b/c,Fail\n");
-  EXPECT_EQ(usageErrorOf([&] { loadExpectations(dir.path(), {"gl"}, kToday); }), "");
+  // Free text, or a header's reason or link, above a blank line is a
+  // comment like any other, and belongs to no entry.
+  dir.write("gl-fails.txt",
+            "# known failures of gl\n# link: https://example.org/1\n\na/b/c,Fail\n");
+  const ExpectationSet set = loadExpectations(dir.path(), {"gl"}, kToday);
+  EXPECT_EQ(set.of("gl").fails.at(0).metadata.link, "");
 }
 
 // A folder's files for a backend the run leaves out are read too: their
