@@ -18,6 +18,7 @@
 #include "compare/image_io.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/utf8.h"
 #include "golden/golden_store.h"
 #include "report/data_uri.h"
 #include "report/gnuplot_batch.h"
@@ -36,19 +37,27 @@ using kainjow::mustache::list;
 
 std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x) : "inf"; }
 
-// HTML's escaping, and the C0 control characters (a driver's log, a
-// manifest's title) spelled out as \xNN: HTML forbids them in a document,
-// and a raw one makes the page a parse error.
+// HTML's escaping, with what HTML forbids in a document spelled out as
+// \xNN, byte by byte: C0 and C1 control characters (a log's ESC or CSI, a
+// manifest's U+0001) and bytes that are not UTF-8 (a multibyte character
+// cut short in a worker's stderr). A raw one makes the page a parse error.
 std::string htmlEscaped(const std::string& text) {
   const std::string escaped = kainjow::mustache::html_escape<std::string>(text);
   std::string out;
   out.reserve(escaped.size());
-  for (const char c : escaped) {
-    const auto byte = static_cast<unsigned char>(c);
-    if ((byte < 0x20 && c != '\t' && c != '\n' && c != '\r') || byte == 0x7F)
-      out += fmt::format("\\x{:02x}", byte);
-    else
-      out.push_back(c);
+  for (std::size_t at = 0; at < escaped.size();) {
+    const Utf8Character c = utf8CharacterAt(escaped, at);
+    const bool control = (c.code < 0x20 && c.code != '\t' && c.code != '\n' && c.code != '\r') ||
+                         (c.code >= 0x7F && c.code <= 0x9F);
+    if (c.length == 0 || control) {
+      const std::size_t length = std::max<std::size_t>(c.length, 1);
+      for (std::size_t k = 0; k < length; ++k)
+        out += fmt::format("\\x{:02x}", static_cast<unsigned char>(escaped[at + k]));
+      at += length;
+    } else {
+      out.append(escaped, at, c.length);
+      at += c.length;
+    }
   }
   return out;
 }

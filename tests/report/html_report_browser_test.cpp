@@ -243,7 +243,7 @@ TEST(HtmlReport, ControlCharactersAreSpelledOut) {
   fs::create_directories(dir / "images");
   nlohmann::json r = record("gl", "Fail", 0);
   r["title"] = "Fresnel \x01 <b>&";
-  r["message"] = "worker stderr: \x1b[31mabort\x1b[0m";
+  r["message"] = "worker stderr: \x1b[31mabort\x1b[0m \xc2\x9b csi";
   std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
   const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
                                              (dir / "results.jsonl").string(),
@@ -254,7 +254,8 @@ TEST(HtmlReport, ControlCharactersAreSpelledOut) {
     EXPECT_FALSE(static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t' && c != '\r')
         << "a raw control character " << static_cast<int>(c);
   EXPECT_NE(html.find("Fresnel \\x01 &lt;b&gt;&amp;"), std::string::npos);
-  EXPECT_NE(html.find("\\x1b[31mabort\\x1b[0m"), std::string::npos);
+  EXPECT_NE(html.find("\\x1b[31mabort\\x1b[0m \\xc2\\x9b csi"), std::string::npos);
+  EXPECT_EQ(html.find("\xc2\x9b"), std::string::npos) << "a raw C1 control character";
   fs::remove_all(dir);
 }
 

@@ -60,13 +60,21 @@ ImageComparison comparisonFromJson(const nlohmann::json& j) {
   return c;
 }
 
-// The largest error of a comparison that did not pass (against the golden,
-// say, on a row that fails by it), else the largest against the CPU
+// The largest error of the worst comparison that did not pass (against the
+// golden, say, on a row that fails by it), else the largest against the CPU
 // reference; "-" for a case that draws nothing.
 std::string imageErrorCell(const CaseResult& r) {
+  // The worst verdict first (a failure over a warning with a larger error),
+  // then the largest error.
+  const auto rank = [](ImageVerdict v) {
+    return v == ImageVerdict::Fail ? 2 : v == ImageVerdict::Pass ? 0 : 1;
+  };
   const ImageComparison* shown = nullptr;
   for (const ImageComparison& c : r.images)
-    if (c.verdict != ImageVerdict::Pass && (!shown || c.maxError > shown->maxError)) shown = &c;
+    if (c.verdict != ImageVerdict::Pass &&
+        (!shown || rank(c.verdict) > rank(shown->verdict) ||
+         (rank(c.verdict) == rank(shown->verdict) && c.maxError > shown->maxError)))
+      shown = &c;
   if (!shown)
     for (const ImageComparison& c : r.images)
       if (c.against == "reference") shown = &c;
