@@ -21,12 +21,6 @@ Outcome judge(const Expectations& e, const CaseResult& r, JudgedCase& judged) {
   return Outcome::UnexpectedFail;
 }
 
-std::string rerunText(const CaseResult& r) {
-  std::string text;
-  for (Status s : r.reruns) text += fmt::format("{}{}", text.empty() ? "" : ", ", statusName(s));
-  return text;
-}
-
 }  // namespace
 
 const char* outcomeName(Outcome outcome) {
@@ -108,12 +102,12 @@ void printBaselineReport(std::ostream& out, const ExpectationSet& expectations,
                      "  unexpected: {} {} is {}{}; if it is a known failure, add `{},{}` to "
                      "the {} fails file\n",
                      r.backend, r.caseId, statusName(r.status),
-                     r.reruns.empty() ? "" : " (reruns: " + rerunText(r) + ")", r.caseId,
+                     r.reruns.empty() ? "" : " (reruns: " + r.rerunsText() + ")", r.caseId,
                      statusName(r.status), r.backend);
         break;
       case Outcome::Flake:
         fmt::print(out, "  flake: {} {} was {}, then on rerun {}\n", r.backend, r.caseId,
-                   statusName(r.status), rerunText(r));
+                   statusName(r.status), r.rerunsText());
         break;
       case Outcome::KnownFlake:
         fmt::print(out, "  known flake: {} {} is {} ({}: {})\n", r.backend, r.caseId,

@@ -4,6 +4,7 @@
 // shader's comment in Latin-1, a driver's log) may hold one.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -51,21 +52,30 @@ inline bool isUtf8(std::string_view text) {
   return true;
 }
 
-// `text` with each byte that starts no character spelled out as \xNN.
-inline std::string utf8SpellingOutOthers(std::string_view text) {
+// `text` with each byte that starts no character, and each byte of a
+// character `writable(code)` refuses (a control character the output's
+// format forbids), spelled out as \xNN.
+template <class Writable>
+std::string utf8SpellingOut(std::string_view text, Writable writable) {
   std::string safe;
   safe.reserve(text.size());
   for (std::size_t at = 0; at < text.size();) {
-    const std::size_t length = utf8CharacterAt(text, at).length;
-    if (length == 0) {
-      safe += fmt::format("\\x{:02x}", static_cast<unsigned char>(text[at]));
-      ++at;
+    const Utf8Character c = utf8CharacterAt(text, at);
+    if (c.length == 0 || !writable(c.code)) {
+      for (std::size_t k = 0; k < std::max<std::size_t>(c.length, 1); ++k)
+        safe += fmt::format("\\x{:02x}", static_cast<unsigned char>(text[at + k]));
+      at += std::max<std::size_t>(c.length, 1);
     } else {
-      safe.append(text.substr(at, length));
-      at += length;
+      safe.append(text.substr(at, c.length));
+      at += c.length;
     }
   }
   return safe;
+}
+
+// `text` with each byte that starts no character spelled out as \xNN.
+inline std::string utf8SpellingOutOthers(std::string_view text) {
+  return utf8SpellingOut(text, [](char32_t) { return true; });
 }
 
 }  // namespace snell

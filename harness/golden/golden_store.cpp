@@ -21,6 +21,16 @@ GoldenFiles goldenFiles(const fs::path& root, const std::string& caseId,
   return {dir / (backend + ".exr"), dir / (backend + ".png"), dir / (backend + ".json")};
 }
 
+namespace {
+
+// KEY.exr, KEY.png or KEY.json: one of the three files of a golden of `key`.
+bool isGoldenFileName(const fs::path& file, const std::string& key) {
+  const std::string extension = file.extension().string();
+  return file.stem() == key && (extension == ".exr" || extension == ".png" || extension == ".json");
+}
+
+}  // namespace
+
 bool hasAnyGolden(const fs::path& root, const std::string& backend, const fs::path& skip) {
   std::error_code error;
   for (fs::recursive_directory_iterator it(root, error), end; !error && it != end;
@@ -32,9 +42,7 @@ bool hasAnyGolden(const fs::path& root, const std::string& backend, const fs::pa
     }
     // Any of a golden's three files counts: a golden with its image lost is
     // a damaged golden to report, not a driver that has none yet.
-    if (const std::string name = it->path().filename().string();
-        name == backend + ".exr" || name == backend + ".png" || name == backend + ".json")
-      return true;
+    if (isGoldenFileName(it->path(), backend)) return true;
   }
   return false;
 }
@@ -49,9 +57,8 @@ bool isGoldenFile(const fs::path& root, const fs::path& path,
   // ROOT/CASE/KEY.ext: below the root by a case folder at least.
   const fs::path inside = file.lexically_relative(folder);
   if (inside.empty() || *inside.begin() == ".." || !inside.has_parent_path()) return false;
-  const std::string extension = file.extension().string();
-  if (extension != ".exr" && extension != ".png" && extension != ".json") return false;
-  return std::find(goldenKeys.begin(), goldenKeys.end(), file.stem().string()) != goldenKeys.end();
+  return std::any_of(goldenKeys.begin(), goldenKeys.end(),
+                     [&](const std::string& key) { return isGoldenFileName(file, key); });
 }
 
 Golden readGolden(const fs::path& root, const std::string& caseId, const std::string& backend,

@@ -42,24 +42,10 @@ std::string number(double x) { return std::isfinite(x) ? fmt::format("{:.4g}", x
 // manifest's U+0001) and bytes that are not UTF-8 (a multibyte character
 // cut short in a worker's stderr). A raw one makes the page a parse error.
 std::string htmlEscaped(const std::string& text) {
-  const std::string escaped = kainjow::mustache::html_escape<std::string>(text);
-  std::string out;
-  out.reserve(escaped.size());
-  for (std::size_t at = 0; at < escaped.size();) {
-    const Utf8Character c = utf8CharacterAt(escaped, at);
-    const bool control = (c.code < 0x20 && c.code != '\t' && c.code != '\n' && c.code != '\r') ||
-                         (c.code >= 0x7F && c.code <= 0x9F);
-    if (c.length == 0 || control) {
-      const std::size_t length = std::max<std::size_t>(c.length, 1);
-      for (std::size_t k = 0; k < length; ++k)
-        out += fmt::format("\\x{:02x}", static_cast<unsigned char>(escaped[at + k]));
-      at += length;
-    } else {
-      out.append(escaped, at, c.length);
-      at += c.length;
-    }
-  }
-  return out;
+  return utf8SpellingOut(kainjow::mustache::html_escape<std::string>(text), [](char32_t c) {
+    if (c < 0x20) return c == '\t' || c == '\n' || c == '\r';
+    return c < 0x7F || c > 0x9F;
+  });
 }
 
 // A result's status in counts and the matrix: a failure that passed on a

@@ -42,33 +42,16 @@ JUnitNotes junitNotesOf(const BaselineReport& report) {
 
 namespace {
 
-// The length of the UTF-8 sequence at `text[at]` that XML 1.0 can carry
-// (a character other than U+FFFE and U+FFFF, well formed), or 0.
-std::size_t xmlCharacterLength(std::string_view text, std::size_t at) {
-  const Utf8Character c = utf8CharacterAt(text, at);
-  return c.code == 0xFFFE || c.code == 0xFFFF ? 0 : c.length;
-}
-
 // XML 1.0 has no way to write most control characters, not even as
 // character references (&#1; makes the file unreadable to every parser),
-// nor a byte that is not UTF-8: a driver's or worker's message that holds
-// one (an ESC of a coloured log, a truncated multibyte character) gets it
-// spelled out as \xNN instead.
+// nor U+FFFE, U+FFFF or a byte that is not UTF-8: a driver's or worker's
+// message that holds one (an ESC of a coloured log, a truncated multibyte
+// character) gets it spelled out as \xNN instead.
 std::string xmlSafe(std::string_view text) {
-  std::string safe;
-  safe.reserve(text.size());
-  for (std::size_t at = 0; at < text.size();) {
-    const auto c = static_cast<unsigned char>(text[at]);
-    const std::size_t length = xmlCharacterLength(text, at);
-    if (length == 0 || c == 0x7F || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')) {
-      safe += fmt::format("\\x{:02x}", c);
-      ++at;
-    } else {
-      safe.append(text.substr(at, length));
-      at += length;
-    }
-  }
-  return safe;
+  return utf8SpellingOut(text, [](char32_t c) {
+    if (c < 0x20) return c == '\t' || c == '\n' || c == '\r';
+    return c != 0x7F && c != 0xFFFE && c != 0xFFFF;
+  });
 }
 
 }  // namespace

@@ -40,12 +40,15 @@ Status CaseResult::gateStatus() const { return passedOnRerun() ? Status::Pass : 
 
 std::string CaseResult::statusText() const {
   if (reruns.empty()) return statusName(status);
+  if (passedOnRerun())
+    return fmt::format("{}, then {} on a rerun (Flake)", statusName(status), rerunsText());
+  return fmt::format("{} (reruns: {})", statusName(status), rerunsText());
+}
+
+std::string CaseResult::rerunsText() const {
   std::vector<std::string> names;
   for (Status s : reruns) names.push_back(statusName(s));
-  if (passedOnRerun())
-    return fmt::format("{}, then {} on a rerun (Flake)", statusName(status),
-                       fmt::join(names, ", "));
-  return fmt::format("{} (reruns: {})", statusName(status), fmt::join(names, ", "));
+  return fmt::format("{}", fmt::join(names, ", "));
 }
 
 }  // namespace snell

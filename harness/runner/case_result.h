@@ -61,6 +61,8 @@ struct CaseResult {
   // The status as a person reads it: "Timeout, then Pass on a rerun
   // (Flake)" for a flake, "Fail (reruns: Fail)" for a failure rerun.
   std::string statusText() const;
+  // The reruns' statuses in order: "Fail, Pass".
+  std::string rerunsText() const;
 };
 
 }  // namespace snell

@@ -33,6 +33,17 @@ std::pair<int, std::string> shell(const std::string& command) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
+// `snell report` on results files in `dir` (by name), its page written to
+// DIR/html from the images in DIR/images; `extra` options after them.
+std::pair<int, std::string> reportIn(const fs::path& dir,
+                                     const std::vector<std::string>& results = {"results.jsonl"},
+                                     const std::string& extra = "") {
+  std::string files;
+  for (const std::string& name : results) files += (dir / name).string() + " ";
+  return shell(fmt::format("{} report {}-o {} --images {} {}", SNELL_BINARY, files,
+                           (dir / "html").string(), (dir / "images").string(), extra));
+}
+
 std::string readText(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream text;
@@ -120,9 +131,7 @@ TEST(HtmlReport, AnInterruptedRunIsSaidAtTheTopOfThePage) {
       if (interrupted) r["incomplete"] = true;
       std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
     }
-    const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                                               (dir / "results.jsonl").string(),
-                                               (dir / "html").string(), (dir / "images").string()));
+    const auto [code, out] = reportIn(dir);
     ASSERT_EQ(code, 0) << out;
     const std::string html = readText(dir / "html" / "index.html");
     EXPECT_EQ(html.find("is an interrupted run: the cases it did not reach are missing") !=
@@ -144,9 +153,7 @@ TEST(HtmlReport, AnotherRunsImagesAreNotShownUnderThisRunsNumbers) {
   writeImages(dir / "images" / kCase);  // gl's image: 13 pixels off by 0.02
   const auto reportOf = [&](const nlohmann::json& gl) {
     std::ofstream(dir / "results.jsonl") << gl.dump() << "\n";
-    const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                                               (dir / "results.jsonl").string(),
-                                               (dir / "html").string(), (dir / "images").string()));
+    const auto [code, out] = reportIn(dir);
     EXPECT_EQ(code, 0) << out;
     return std::pair(out, readText(dir / "html" / "index.html"));
   };
@@ -178,9 +185,7 @@ TEST(HtmlReport, AFolderWithoutTheRunsImagesIsSaidOnThePage) {
   fs::remove_all(dir);
   fs::create_directories(dir / "images");
   std::ofstream(dir / "results.jsonl") << record("gl", "Fail", 13).dump() << "\n";
-  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                                             (dir / "results.jsonl").string(),
-                                             (dir / "html").string(), (dir / "images").string()));
+  const auto [code, out] = reportIn(dir);
   ASSERT_EQ(code, 0) << out;
   EXPECT_NE(readText(dir / "html" / "index.html")
                 .find("No pictures or heat maps: " + (dir / "images").string() +
@@ -188,11 +193,7 @@ TEST(HtmlReport, AFolderWithoutTheRunsImagesIsSaidOnThePage) {
             std::string::npos);
   // With the images there, no such line.
   writeImages(dir / "images" / kCase);
-  ASSERT_EQ(shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                              (dir / "results.jsonl").string(), (dir / "html").string(),
-                              (dir / "images").string()))
-                .first,
-            0);
+  ASSERT_EQ(reportIn(dir).first, 0);
   EXPECT_EQ(readText(dir / "html" / "index.html").find("No pictures or heat maps"),
             std::string::npos);
   fs::remove_all(dir);
@@ -215,10 +216,7 @@ TEST(HtmlReport, AComparisonWithTheGoldenIsPictured) {
   r["images"].push_back(golden);
   std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
   const auto reportWith = [&](const fs::path& goldenDir) {
-    const auto [code, out] =
-        shell(fmt::format("{} report {} -o {} --images {} --golden {}", SNELL_BINARY,
-                          (dir / "results.jsonl").string(), (dir / "html").string(),
-                          (dir / "images").string(), goldenDir.string()));
+    const auto [code, out] = reportIn(dir, {"results.jsonl"}, "--golden " + goldenDir.string());
     EXPECT_EQ(code, 0) << out;
     return readText(dir / "html" / "index.html");
   };
@@ -245,9 +243,7 @@ TEST(HtmlReport, ControlCharactersAreSpelledOut) {
   r["title"] = "Fresnel \x01 <b>&";
   r["message"] = "worker stderr: \x1b[31mabort\x1b[0m \xc2\x9b csi";
   std::ofstream(dir / "results.jsonl") << r.dump() << "\n";
-  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                                             (dir / "results.jsonl").string(),
-                                             (dir / "html").string(), (dir / "images").string()));
+  const auto [code, out] = reportIn(dir);
   ASSERT_EQ(code, 0) << out;
   const std::string html = readText(dir / "html" / "index.html");
   for (const char c : html)
@@ -271,9 +267,7 @@ TEST(HtmlReport, TwoRunsShowTheirRegressionsAndFixes) {
   std::ofstream(dir / "passing.jsonl") << record("gl", "Pass", 0).dump() << "\n";
   std::ofstream(dir / "failing.jsonl") << record("gl", "Fail", 13).dump() << "\n";
   const auto reportOf = [&](const char* first, const char* second) {
-    const auto [code, out] = shell(fmt::format("{} report {} {} -o {} --images {}", SNELL_BINARY,
-                                               (dir / first).string(), (dir / second).string(),
-                                               (dir / "html").string(), (dir / "images").string()));
+    const auto [code, out] = reportIn(dir, {first, second});
     EXPECT_EQ(code, 0) << out;
     return readText(dir / "html" / "index.html");
   };
@@ -317,9 +311,7 @@ TEST(HtmlReport, RendersInHeadlessChromiumWithEveryImageEmbedded) {
     std::ofstream out(dir / "results.jsonl");
     out << record("gl", "Fail", 13).dump() << "\n" << record("vk", "Pass", 0).dump() << "\n";
   }
-  const auto [code, out] = shell(fmt::format("{} report {} -o {} --images {}", SNELL_BINARY,
-                                             (dir / "results.jsonl").string(),
-                                             (dir / "html").string(), (dir / "images").string()));
+  const auto [code, out] = reportIn(dir);
   ASSERT_EQ(code, 0) << out;
   const std::string html = readText(dir / "html" / "index.html");
   // The failure is named, with its count, in the heat map's caption.
