@@ -93,7 +93,9 @@ enum class RegionOp { Add, Multiply };
 // operands' own open regions, and the floats that can come out of it.
 // Written into `r`, a default Interval that is neither operand: the callers
 // return it by name, so it is built in place instead of copied out whole.
-void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op) {
+// Flattened: GCC at -O2 kept closedParts, exactProductRange, pendingError
+// and roundedAround as calls, a tenth of an operation's instructions.
+[[gnu::flatten]] void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op) {
   if (a.undefined || b.undefined || !std::isfinite(a.err) || !std::isfinite(b.err)) {
     r = Interval::unconstrained();
     return;
