@@ -151,6 +151,21 @@ TEST(BaselineCli, SkippedCasesDoNotRun) {
   EXPECT_NE(o.out.find("skipped: gl orange-book/14.1-fresnel/sweep"), std::string::npos) << o.out;
 }
 
+// The CI example gates softpipe with the shipped file: it must name every
+// case softpipe fails on the whole catalog, and no more (an entry that
+// passes is an improvement, exit 1 as well).
+TEST(BaselineCli, TheShippedSoftpipeExpectationsHoldForTheWholeCatalog) {
+  Scratch scratch;
+  const Outcome o =
+      snell(fmt::format("run --backend gl:softpipe --expectations {} --json {} --out {}",
+                        SNELL_SOURCE_ROOT "/ci/expectations/softpipe-fails.txt",
+                        (scratch / "r.jsonl").string(), (scratch / "out").string()));
+  EXPECT_EQ(o.code, 0) << o.out;
+  EXPECT_NE(o.out.find("expected: gl:softpipe learnopengl/reflection/torus is Fail"),
+            std::string::npos)
+      << o.out;
+}
+
 // Results with the timings taken out: what must match between runs.
 std::vector<nlohmann::json> withoutTimings(std::vector<nlohmann::json> results) {
   for (nlohmann::json& r : results)
