@@ -193,5 +193,38 @@ TEST(MergeResults, AMissingShardIsRefusedAndAnEmptyFileStandsForOne) {
   EXPECT_THROW(mergeResults({wholeGl, vk1}, catalog), UsageError);
 }
 
+// An empty file is meant for a shard with no cases. Where the other shards
+// show that the one it stands for had cases (a shard with two cases, or a
+// later shard with one), the merge says its results are missing.
+TEST(MergeResults, AnEmptyFileForAShardThatHadCasesIsNoted) {
+  const auto of = [](CaseResult r, const char* shard) {
+    r.shard = shard;
+    r.shardOf = "--filter '*' --backend gl";
+    return r;
+  };
+  const ResultsFile empty{"e.jsonl", {}};
+  // Three cases in four shards: shard 4/4 had none.
+  const ResultsFile a{"1.jsonl", {of(result("a", "gl"), "1/4")}};
+  const ResultsFile b{"2.jsonl", {of(result("b", "gl"), "2/4")}};
+  const ResultsFile c{"3.jsonl", {of(result("c", "gl"), "3/4")}};
+  EXPECT_TRUE(notesOnEmptyShards({a, b, c, empty}).empty());
+  EXPECT_TRUE(notesOnEmptyShards({a, b, c}).empty());
+  // Shard 2/4 is missing, and shard 3/4 holds a case: 2/4 had one too.
+  const std::vector<std::string> later = notesOnEmptyShards({a, c, empty});
+  ASSERT_EQ(later.size(), 1u);
+  EXPECT_NE(later[0].find("e.jsonl is empty and stands for shard 2/4 of the run of --filter '*' "
+                          "--backend gl, but shard 2/4 had cases"),
+            std::string::npos)
+      << later[0];
+  // Six cases in three shards: each shard had two.
+  const ResultsFile ad{"1.jsonl", {of(result("a", "gl"), "1/3"), of(result("d", "gl"), "1/3")}};
+  const ResultsFile be{"2.jsonl", {of(result("b", "gl"), "2/3"), of(result("e", "gl"), "2/3")}};
+  const std::vector<std::string> last = notesOnEmptyShards({ad, be, empty});
+  ASSERT_EQ(last.size(), 1u);
+  EXPECT_NE(last[0].find("shard 3/3 had cases (the other shards hold up to 2 each)"),
+            std::string::npos)
+      << last[0];
+}
+
 }  // namespace
 }  // namespace snell
