@@ -194,7 +194,9 @@ Command addSweepCommand(CLI::App& app) {
         options->json.empty() ? fs::path(options->out) / "sweep.json" : fs::path(options->json);
     sweep::writeSweepJson(result, json);
     sweep::printSweepTable(result, stdout);
-    if (!options->noCharts)
+    if (options->noCharts)
+      sweep::removeEarlierSweepCharts(options->out);
+    else
       for (const fs::path& chart : sweep::writeSweepCharts(result, options->out))
         fmt::print("chart: {}\n", chart.string());
     fmt::print("{} points on {} backend(s) and the oracle, {} Fresnel method samples; JSON: {}\n",

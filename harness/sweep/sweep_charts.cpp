@@ -204,13 +204,22 @@ void removeEarlierCharts(const fs::path& outDir, const std::vector<fs::path>& wr
   for (const fs::path& path : stale) fs::remove(path, error);
 }
 
-}  // namespace
-
-std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
-  // sweep-data/ is the charts' own, written whole each time: an earlier
-  // sweep's data (another backend's) goes with it.
+// sweep-data/ is the charts' own, written whole each time: an earlier
+// sweep's data (another backend's) goes with it.
+void removeEarlierChartData(const fs::path& outDir) {
   std::error_code ignored;
   fs::remove_all(outDir / "sweep-data", ignored);
+}
+
+}  // namespace
+
+void removeEarlierSweepCharts(const fs::path& outDir) {
+  removeEarlierChartData(outDir);
+  removeEarlierCharts(outDir, {});
+}
+
+std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {
+  removeEarlierChartData(outDir);
   ChartData data(outDir);
   double reflectWorst = 0;
   for (const BackendSweep& sweep : result.sweeps) {

@@ -14,4 +14,9 @@ namespace snell::sweep {
 std::vector<std::filesystem::path> writeSweepCharts(const SweepResult& result,
                                                     const std::filesystem::path& outDir);
 
+// An earlier sweep's charts and their data in OUTDIR, for a sweep that
+// draws none (--no-charts): they would stand beside its results and
+// contradict them.
+void removeEarlierSweepCharts(const std::filesystem::path& outDir);
+
 }  // namespace snell::sweep

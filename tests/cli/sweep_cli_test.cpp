@@ -284,6 +284,21 @@ TEST(SweepCli, AnEarlierSweepsChartsDoNotStayBesideANewOnesResults) {
     EXPECT_EQ(entry.path().filename().string().find("-gl-"), std::string::npos) << entry.path();
   EXPECT_TRUE(fs::exists(out / "sweep-notes.txt"));
   EXPECT_TRUE(fs::exists(out / "mine.png"));
+  // A sweep that draws no charts leaves none of the earlier ones either.
+  const Outcome noCharts = runSnell(
+      fmt::format("sweep --backend vk --quick --no-builtins --listings 'orange-book/14.1-fresnel' "
+                  "--no-charts --out {}",
+                  out.string()));
+  ASSERT_TRUE(noCharts.code == 0 || noCharts.code == 1) << noCharts.out;
+  EXPECT_TRUE(fs::exists(out / "sweep.json"));
+  EXPECT_FALSE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
+  EXPECT_FALSE(fs::exists(out / "sweep-data"));
+  for (const auto& entry : fs::directory_iterator(out))
+    EXPECT_FALSE(entry.path().filename().string().starts_with("sweep-") &&
+                 (entry.path().extension() == ".svg" || entry.path().extension() == ".png"))
+        << entry.path();
+  EXPECT_TRUE(fs::exists(out / "sweep-notes.txt"));
+  EXPECT_TRUE(fs::exists(out / "mine.png"));
   fs::remove_all(out);
 }
 
