@@ -1,7 +1,9 @@
 #include "sweep/listing_draw.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include <algorithm>
 #include <cctype>
 #include <sstream>
 
@@ -15,10 +17,17 @@ std::string whyNotSwept(const Manifest& manifest) {
            "is swept";
   if (manifest.oracle.empty())
     return "has no hand-written oracle, which the sweep holds a listing's draws against";
-  if (manifest.captureVertex.empty())
-    return "reads back from the fragment stage only: its inputs come from a scene's pixels "
-           "(interpolated or screen-space), which no sweep vertex can set; `snell run` covers "
-           "it on the sphere and torus scenes";
+  if (manifest.captureVertex.empty()) {
+    std::vector<std::string> scenes;
+    for (const CaseSpec& c : manifest.cases)
+      if (std::find(scenes.begin(), scenes.end(), c.scene) == scenes.end())
+        scenes.push_back(c.scene);
+    return fmt::format(
+        "reads back from the fragment stage only: its inputs come from a scene's pixels "
+        "(interpolated or screen-space), which no sweep vertex can set; `snell run` covers "
+        "it on its scene{} ({})",
+        scenes.size() == 1 ? "" : "s", fmt::join(scenes, ", "));
+  }
   return "";
 }
 

@@ -172,6 +172,15 @@ TEST(SweepCli, NamedListingsNoneOfWhichCanBeSweptAreExit2BeforeAnySweep) {
         << o.out;
     EXPECT_FALSE(std::filesystem::exists(out)) << builtins << o.out;
   }
+  // It names the scenes `snell run` covers such a listing on: a shadertoy
+  // listing is drawn full screen only.
+  const Outcome lens = runSnell(
+      "sweep --quick --no-builtins --no-charts --backend gl --listings "
+      "'shadertoy/lens' --out " +
+      out.string());
+  EXPECT_EQ(lens.code, 2) << lens.out;
+  EXPECT_NE(lens.out.find("`snell run` covers it on its scene (fullscreen)"), std::string::npos)
+      << lens.out;
   // With --no-builtins and no --listings, every listing of a catalog that
   // has none that can be swept.
   const std::filesystem::path shaders = "/tmp/snell-sweep-none-shaders/cs381";
