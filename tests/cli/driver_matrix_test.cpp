@@ -185,6 +185,16 @@ TEST_F(DriverMatrix, AVariableThatChoosesAnotherDriverRefusesTheBackend) {
             std::string::npos)
       << narrow.out;
   EXPECT_NE(narrow.out.find("gl:llvmpipe-128"), std::string::npos) << narrow.out;
+  // lavapipe reads the same variable: vk came up 128 bits wide under the
+  // 256-bit goldens' key.
+  const Outcome narrowVk =
+      snell(runArgs("vk", "orange-book/14.1-fresnel/*"), "LP_NATIVE_VECTOR_WIDTH=128");
+  EXPECT_EQ(narrowVk.code, 2) << narrowVk.out;
+  EXPECT_NE(narrowVk.out.find("vk is lavapipe at its native vector width, and "
+                              "LP_NATIVE_VECTOR_WIDTH=128 is set in the environment"),
+            std::string::npos)
+      << narrowVk.out;
+  EXPECT_TRUE(narrowVk.byBackend.empty());
   // The backends named for those drivers run as before.
   EXPECT_EQ(
       snell(runArgs("gl:softpipe", "orange-book/14.1-fresnel/sweep"), "GALLIUM_DRIVER=softpipe")

@@ -69,5 +69,19 @@ TEST_F(VkDriverSelection, TheOlderIcdVariableWinsToo) {
             std::string::npos);
 }
 
+// lavapipe at a width LP_NATIVE_VECTOR_WIDTH forces is not the driver vk's
+// goldens were blessed on; a GPU's ICD does not read the variable.
+TEST(LavapipeWidth, AForcedWidthRefusesLavapipeOnly) {
+  const std::string lavapipe = "llvmpipe (LLVM 15.0.6, 128 bits)";
+  EXPECT_EQ(whyNotLavapipeAtItsNativeWidth("vk", lavapipe, nullptr), "");
+  EXPECT_EQ(whyNotLavapipeAtItsNativeWidth("vk", lavapipe, ""), "");
+  EXPECT_EQ(whyNotLavapipeAtItsNativeWidth("vk", "NVIDIA H200", "128"), "");
+  const std::string why = whyNotLavapipeAtItsNativeWidth("vk", lavapipe, "128");
+  EXPECT_NE(why.find("vk is lavapipe at its native vector width, and LP_NATIVE_VECTOR_WIDTH=128 "
+                     "is set in the environment (llvmpipe (LLVM 15.0.6, 128 bits)): unset it"),
+            std::string::npos)
+      << why;
+}
+
 }  // namespace
 }  // namespace snell::vk

@@ -1,6 +1,7 @@
 #include "backends/vk/vk_backend.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <iterator>
 #include <utility>
@@ -15,6 +16,7 @@
 #include "backends/vk/vertex_streams.h"
 #include "backends/vk/vk_capture.h"
 #include "backends/vk/vk_device.h"
+#include "backends/vk/vk_driver_selection.h"
 #include "backends/vk/vk_instance.h"
 #include "backends/vk/vk_prepared_capture.h"
 #include "backends/vk/vk_prepared_render.h"
@@ -80,6 +82,11 @@ class VkBackend final : public Backend {
         renders_(kCachedPrograms),
         programStore_(options.cacheDir) {
     instance_.validationLog().throwIfAny("Vulkan start-up");
+    if (lavapipeByDefault)
+      if (const std::string why = vk::whyNotLavapipeAtItsNativeWidth(
+              name_, device_.driverInfo().renderer, std::getenv("LP_NATIVE_VECTOR_WIDTH"));
+          !why.empty())
+        throw SetupError(why);
   }
 
   std::string name() const override { return name_; }
