@@ -364,8 +364,15 @@ Interval withAlternative(const Interval& value, const Interval& alternative) {
 }
 
 Interval symmetricAboutIdeal(const Interval& value) {
-  if (value.undefined || !std::isfinite(value.err)) return value;
+  if (value.undefined) return value;
   Interval r = value;
+  if (!std::isfinite(value.err)) {
+    // A value of the formula may be past the float range (an infinity): E
+    // has no bound, and neither has [x - E, x + E].
+    r.lo = -kInf;
+    r.hi = kInf;
+    return r;
+  }
   const Range symmetric =
       float_sets::floatsIn(value.idealLo - value.err, value.idealHi + value.err);
   r.lo = std::min(r.lo, symmetric.lo);

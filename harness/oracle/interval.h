@@ -128,7 +128,8 @@ Interval withAlternative(const Interval& value, const Interval& alternative);
 // A Vulkan built-in whose precision is inherited from a formula must return
 // a value in [x - E, x + E] around the exact result x, E being the largest
 // distance of any permitted value of any equivalent formula: the allowed
-// set is made symmetric about the ideal value.
+// set is made symmetric about the ideal value: every float, where a value
+// of the formula may be past the float range.
 Interval symmetricAboutIdeal(const Interval& value);
 
 }  // namespace snell

@@ -51,6 +51,15 @@ Interval folded(Interval r, const Interval& x, double (*f)(double)) {
   return r;
 }
 
+// Vulkan states the bound of a built-in whose precision is inherited from
+// a formula as [x - E, x + E] about the exact result x, E the largest
+// distance of any value of the formula: wider than the formula's own set
+// on the side where it reaches less far. (glsl/geometric.h's inherited()
+// does the same for the geometric built-ins.)
+Interval inheritedUnderVulkan(const Interval& r) {
+  return currentPrecisionRules() == PrecisionRules::Vulkan ? symmetricAboutIdeal(r) : r;
+}
+
 double inverseSqrtOf(double x) { return 1.0 / std::sqrt(x); }
 double sqrtOf(double x) { return std::sqrt(x); }
 double exp2Of(double x) { return std::exp2(x); }
@@ -105,7 +114,8 @@ Interval sqrt(const Interval& xIn) {
   const Interval r =
       leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
                 above(std::sqrt(std::max(0.0, x.idealHi))), up(up(propagated) + own));
-  return folded(r, x, sqrtOf);
+  // Inherited from 1.0 / inversesqrt(x).
+  return inheritedUnderVulkan(folded(r, x, sqrtOf));
 }
 
 Interval exp2(const Interval& xIn) {
@@ -169,7 +179,7 @@ Interval pow(const Interval& x, const Interval& y) {
   // result is open, pow(0, y > 0) = 0 of the function's definition
   // included.
   if (x.undefined || y.undefined || x.lo <= 0.0) return Interval::unconstrained();
-  return exp2(y * log2(x));
+  return inheritedUnderVulkan(exp2(y * log2(x)));
 }
 
 Interval max(const Interval& aIn, const Interval& bIn) {

@@ -421,6 +421,24 @@ float inverseSqrtOf(float x, bool flushArgument = true) {
   return pickWithinUlps(1.0 / std::sqrt(static_cast<double>(x)), 2.0, kLibmRelative);
 }
 
+// Vulkan bounds a built-in whose precision is inherited from a formula by
+// [x - E, x + E] about the exact result x, E the largest distance of any of
+// the formula's values: a value of the formula mirrored about x is within
+// it. Half the calls under the Vulkan rules take the mirror.
+bool mirrorsUnderVulkan() { return tState.rules == PrecisionRules::Vulkan && percent(50); }
+
+// `formula` mirrored about `exact` (a libm value, within kLibmRelative of
+// the exact result): the distance is shortened by that error twice and
+// the mirror rounded toward the exact result, so that it is never farther
+// from it than `formula` is.
+float mirroredAbout(float formula, double exact) {
+  if (!std::isfinite(formula) || !std::isfinite(exact)) return formula;
+  const double distance = std::fabs(formula - exact) - 2.0 * std::fabs(exact) * kLibmRelative;
+  if (!(distance > 0.0)) return formula;
+  return maybeFlush(static_cast<float>(formula > exact ? floatAtOrAbove(exact - distance)
+                                                       : floatAtOrBelow(exact + distance)));
+}
+
 float log2Of(float x) {
   x = maybeFlush(x);
   if (std::isnan(x) || x <= 0.0f) return kNaN;
@@ -526,7 +544,9 @@ Adv sqrt(const Adv& x) {
   if (std::isnan(v) || v < 0.0f) return leaf(kNaN);
   if (v == 0.0f) return leaf(0.0f);  // see the header: the formula's limit
   // Inherited from 1.0 / inversesqrt(x), x already past its one flush.
-  return leaf(quotient(1.0f, inverseSqrtOf(v, false)));
+  const float formula = quotient(1.0f, inverseSqrtOf(v, false));
+  if (mirrorsUnderVulkan()) return leaf(mirroredAbout(formula, std::sqrt(static_cast<double>(v))));
+  return leaf(formula);
 }
 
 Adv exp2(const Adv& x) {
@@ -552,6 +572,14 @@ Adv pow(const Adv& x, const Adv& y) {
   if (isConstant(x) && isConstant(y) && percent(tState.foldPercent)) {
     const double value = std::exp2(foldedOf(y) * std::log2(foldedOf(x)));
     if (std::isfinite(value) && foldedOf(x) > 0.0) return leaf(foldToFloat(value), true, value);
+  }
+  if (mirrorsUnderVulkan()) {
+    // The operands once, so that the mirror is about the exact result of
+    // the values the formula took.
+    const float base = x.value(), exponent = y.value();
+    const float formula = exp2(Adv(exponent) * log2(Adv(base))).value();
+    return leaf(
+        mirroredAbout(formula, std::pow(static_cast<double>(base), static_cast<double>(exponent))));
   }
   return exp2(y * log2(x));
 }

@@ -23,6 +23,9 @@
 //   double from the decimals as written and round it to either neighbour;
 // - returns transcendentals, inversesqrt and division anywhere inside their
 //   ULP bound, preferring the two edges;
+// - under the Vulkan rules, may return sqrt and pow (whose precision is
+//   inherited from a formula) mirrored about the exact result, as the
+//   rule's [x - E, x + E] allows;
 // - may re-evaluate a shared subexpression at each use, or compute it once.
 //
 // A value the spec leaves undefined (log2 or inversesqrt of x <= 0, sqrt of

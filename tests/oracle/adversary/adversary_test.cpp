@@ -127,6 +127,22 @@ TEST(Adversary, MachineReachesTheEdgesOfAnUlpBound) {
   EXPECT_EQ(*third.rbegin(), highest);
 }
 
+TEST(Adversary, MachineMirrorsAnInheritedBuiltInUnderVulkan) {
+  // sqrt(4 - 2^-21) = 2 - 2^-23 (to 2^-47): 1.0 / inversesqrt(x) reaches
+  // 2 - 6 * 2^-23 below and 2 + 3 * 2^-22 above, so Vulkan's [x - E, x + E]
+  // reaches 2 - 8 * 2^-23, which the formula alone never gives; GLSL takes
+  // the formula's values only.
+  const float x = 4.0f - 0x1p-21f;
+  const auto vulkan = spread([&] { return sqrt(Adv(x)); }, PrecisionRules::Vulkan);
+  const auto glsl = spread([&] { return sqrt(Adv(x)); }, PrecisionRules::Glsl);
+  EXPECT_EQ(*glsl.begin(), 2.0f - 6 * 0x1p-23f);
+  EXPECT_LT(*vulkan.begin(), *glsl.begin());
+  EXPECT_GE(*vulkan.begin(), 2.0f - 8 * 0x1p-23f);
+  const auto power = spread([] { return pow(Adv(2.0f), Adv(5.0f)); }, PrecisionRules::Vulkan);
+  const auto formula = spread([] { return pow(Adv(2.0f), Adv(5.0f)); }, PrecisionRules::Glsl);
+  EXPECT_LT(*power.begin(), *formula.begin());
+}
+
 TEST(Adversary, MachineFoldsConstantsEitherWay) {
   // 0.66 * 0.66 folded in double from the decimals: either neighbour of 0.4356.
   const auto folded = spread([] { return Adv::literal(0.66) * Adv::literal(0.66); });
