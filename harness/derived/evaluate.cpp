@@ -65,6 +65,15 @@ struct Builtins {
     using glsl::min, snell::min;
     return min(a, b);
   }
+  // clamp(x, minVal, maxVal) is min(max(x, minVal), maxVal), and undefined
+  // where minVal > maxVal (GLSL 4.60 section 8.3): where some allowed
+  // evaluation of the bounds crosses them, any result is allowed.
+  template <class T>
+  static T clamp(const T& x, const T& minVal, const T& maxVal) {
+    if constexpr (std::same_as<T, Interval>)
+      if ((maxVal < minVal) != Truth::False) return Interval::unconstrained();
+    return min(max(x, minVal), maxVal);
+  }
   template <class T>
   static T abs(const T& x) {
     using glsl::abs, snell::abs;
@@ -297,10 +306,8 @@ class Evaluation {
         each(op, [&](std::size_t s) { return B::abs(arg(op, 0, s)); });
         break;
       case OpCode::Clamp:
-        // clamp(x, a, b) is min(max(x, a), b) (GLSL 4.60 section 8.3): exact.
-        each(op, [&](std::size_t s) {
-          return B::min(B::max(arg(op, 0, s), arg(op, 1, s)), arg(op, 2, s));
-        });
+        each(op,
+             [&](std::size_t s) { return B::clamp(arg(op, 0, s), arg(op, 1, s), arg(op, 2, s)); });
         break;
       case OpCode::Select:
         each(op, [&](std::size_t s) {

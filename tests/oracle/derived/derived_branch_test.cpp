@@ -42,6 +42,32 @@ void main() {
   EXPECT_TRUE(contains(allowed[1][1], 6.0f));
 }
 
+// clamp(x, minVal, maxVal) is undefined where minVal > maxVal (GLSL 4.60
+// section 8.3): any result is allowed wherever an allowed evaluation of the
+// bounds may cross them, and none is where they cannot.
+TEST(DerivedBranch, ClampWhoseBoundsMayCrossIsUndefined) {
+  const derived::Program program = derived::lowerShader({"user.vert", R"(#version 140
+in float x;
+out float y;
+out float z;
+void main() {
+  y = clamp(5.0, x, 1.0);
+  z = clamp(5.0, 0.0, 1.0);
+}
+)"});
+  const AttributeMap inputs = oneInput("x", {0.5f, 2.0f, 1.0f});
+  const auto allowed = derived::evaluateProgram<Interval>(program, {}, inputs, 3);
+  EXPECT_FALSE(allowed[0][0].undefined);
+  EXPECT_TRUE(contains(allowed[0][0], 1.0f));
+  EXPECT_FALSE(contains(allowed[0][0], 2.0f));
+  EXPECT_TRUE(allowed[0][1].undefined);   // 2 > 1: undefined
+  EXPECT_FALSE(allowed[0][2].undefined);  // 1 = 1: min(max(5, 1), 1) = 1
+  EXPECT_FALSE(contains(allowed[0][2], 2.0f));
+  EXPECT_FALSE(allowed[1][0].undefined);
+  EXPECT_TRUE(contains(allowed[1][0], 1.0f));
+  EXPECT_FALSE(contains(allowed[1][0], 0.0f));
+}
+
 // A text that tests VULKAN is another text on a Vulkan driver, whose
 // compiler defines it: the derived oracle follows each API's text, and
 // answers by the rules (only a Vulkan driver is judged by Vulkan's). It
