@@ -14,79 +14,91 @@
 namespace snell {
 namespace {
 
-// Records say which shard of how many ran them, and of which run (its
-// --filter and --backend): a merge that lacks one of a run's shards would be
-// a run with cases missing and no word of it, also where another run's
-// shard (another filter or backend list) stands in its place. Shards are
-// counted per run over all files, not per backend: a shard may hold no
-// record of a backend (its cases skipped there, or the backend not up on
-// that runner), and each backend may be a run of its own, sharded apart. A
-// file with no results (a shard with no cases) may stand for any one shard;
-// records of a whole run, or written before records named their shard, say
-// nothing and are not counted.
 // A run's shards, as the records name them: (the run's selection, shard
-// count N) -> shard index I -> the cases its records hold. Records written
-// before records named their run (no shard_of) count for every run of
-// their N.
-using ShardsOfRuns =
-    std::map<std::pair<std::string, std::size_t>, std::map<std::size_t, std::set<std::string>>>;
+// count N) -> the shards I given, and the cases each shard of the run holds
+// where its records say. Records written before records named their run
+// (no shard_of) count for every run of their N.
+struct ShardsOfRun {
+  std::set<std::size_t> given;
+  std::vector<std::size_t> cases;  // per shard; empty where no record says
+};
+using ShardsOfRuns = std::map<std::pair<std::string, std::size_t>, ShardsOfRun>;
 
 ShardsOfRuns shardsOfRuns(const std::vector<ResultsFile>& files) {
   ShardsOfRuns seen;
-  std::map<std::size_t, std::map<std::size_t, std::set<std::string>>> unnamed;  // by N
+  std::map<std::size_t, std::set<std::size_t>> unnamed;  // N -> I
   for (const ResultsFile& file : files)
-    for (const CaseResult& r : file.results)
-      if (!r.shard.empty()) {
-        const Shard shard = parseShard(r.shard);
-        if (r.shardOf.empty())
-          unnamed[shard.count][shard.index].insert(r.caseId);
-        else
-          seen[{r.shardOf, shard.count}][shard.index].insert(r.caseId);
+    for (const CaseResult& r : file.results) {
+      if (r.shard.empty()) continue;
+      const Shard shard = parseShard(r.shard);
+      if (r.shardOf.empty()) {
+        unnamed[shard.count].insert(shard.index);
+        continue;
       }
-  for (const auto& [count, shards] : unnamed) {
+      ShardsOfRun& run = seen[{r.shardOf, shard.count}];
+      run.given.insert(shard.index);
+      if (run.cases.empty() && r.shardCases.size() == shard.count) run.cases = r.shardCases;
+    }
+  for (const auto& [count, indices] : unnamed) {
     bool joined = false;
-    for (auto& [run, named] : seen)
+    for (auto& [run, shards] : seen)
       if (run.second == count) {
-        for (const auto& [index, cases] : shards) named[index].insert(cases.begin(), cases.end());
+        shards.given.insert(indices.begin(), indices.end());
         joined = true;
       }
-    if (!joined) seen[{"", count}] = shards;
+    if (!joined) seen[{"", count}].given = indices;
   }
   return seen;
 }
 
-std::string ofTheRun(const std::string& selection) {
-  return selection.empty() ? std::string() : fmt::format(" of the run of {}", selection);
-}
-
 // Records say which shard of how many ran them, and of which run (its
 // --filter and --backend): a merge that lacks one of a run's shards would be
 // a run with cases missing and no word of it, also where another run's
 // shard (another filter or backend list) stands in its place. Shards are
 // counted per run over all files, not per backend: a shard may hold no
 // record of a backend (its cases skipped there, or the backend not up on
-// that runner), and each backend may be a run of its own, sharded apart. A
-// file with no results (a shard with no cases) may stand for any one shard;
-// records of a whole run, or written before records named their shard, say
-// nothing and are not counted.
+// that runner), and each backend may be a run of its own, sharded apart.
+// Records also say how many cases each shard of their run holds: a shard
+// with none needs no file, and one with cases is missing whatever else is
+// given. Where no record says (records written before they counted), a
+// file with no results may stand for any one shard. Records of a whole run
+// say nothing and are not counted.
 void requireEveryShard(const std::vector<ResultsFile>& files) {
   const std::size_t emptyFiles = static_cast<std::size_t>(std::count_if(
       files.begin(), files.end(), [](const ResultsFile& f) { return f.results.empty(); }));
   // Every run that lacks shards is named: where a shard of another run was
   // given in place of one, both runs are. An empty file is one shard of one
-  // run: it stands for one missing shard in all.
-  std::vector<std::string> lacking;
-  std::size_t missingShards = 0;
+  // run: it stands for one missing shard, of unknown size, in all.
+  std::vector<std::string> lacking, lackingWithCases;
+  std::size_t unknownShards = 0;
   for (const auto& [run, shards] : shardsOfRuns(files)) {
     const auto& [selection, count] = run;
-    std::vector<std::string> missing;
-    for (std::size_t i = 1; i <= count; ++i)
-      if (!shards.contains(i)) missing.push_back(fmt::format("{}/{}", i, count));
-    if (missing.empty()) continue;
-    missingShards += missing.size();
-    lacking.push_back(fmt::format("shard {}{}", fmt::join(missing, ", "), ofTheRun(selection)));
+    std::vector<std::string> missing, withCases;
+    for (std::size_t i = 1; i <= count; ++i) {
+      if (shards.given.contains(i)) continue;
+      if (shards.cases.empty()) {
+        missing.push_back(fmt::format("{}/{}", i, count));
+        ++unknownShards;
+      } else if (shards.cases[i - 1] > 0) {
+        withCases.push_back(fmt::format("{}/{} ({} case{})", i, count, shards.cases[i - 1],
+                                        shards.cases[i - 1] == 1 ? "" : "s"));
+      }
+    }
+    const std::string ofTheRun =
+        selection.empty() ? std::string() : fmt::format(" of the run of {}", selection);
+    if (!missing.empty())
+      lacking.push_back(fmt::format("shard {}{}", fmt::join(missing, ", "), ofTheRun));
+    if (!withCases.empty())
+      lackingWithCases.push_back(fmt::format("shard {}{}", fmt::join(withCases, ", "), ofTheRun));
   }
-  if (missingShards > emptyFiles)
+  if (!lackingWithCases.empty())
+    throw UsageError(fmt::format(
+        "no results of {}: merge every shard's results file, or run the missing shard with the "
+        "same --filter, --backend and --expectations{}",
+        fmt::join(lackingWithCases, "; nor of "),
+        emptyFiles == 0 ? std::string()
+                        : " (an empty file stands only for a shard with no cases to give)"));
+  if (unknownShards > emptyFiles)
     throw UsageError(fmt::format(
         "no results of {}{}: merge every shard's results file (an empty one counts), or run the "
         "missing shard with the same --filter and --backend",
@@ -137,36 +149,9 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
     results.push_back(*value.first);
     results.back().shard.clear();  // the merge is the whole run
     results.back().shardOf.clear();
+    results.back().shardCases.clear();
   }
   return results;
-}
-
-std::vector<std::string> notesOnEmptyShards(const std::vector<ResultsFile>& files) {
-  std::vector<std::string> empty;
-  for (const ResultsFile& file : files)
-    if (file.results.empty()) empty.push_back(file.path);
-  if (empty.empty()) return {};
-  // Shard I of N holds cases I-1, I-1+N, ... of the run's list: where a
-  // shard holds two cases, or a shard after I holds one, the list is longer
-  // than I, so shard I had cases too.
-  std::vector<std::string> notes;
-  for (const auto& [run, shards] : shardsOfRuns(files)) {
-    const auto& [selection, count] = run;
-    std::size_t mostCases = 0;
-    for (const auto& [index, cases] : shards) mostCases = std::max(mostCases, cases.size());
-    for (std::size_t i = 1; i <= count; ++i) {
-      if (shards.contains(i)) continue;
-      const bool laterShardHasCases = shards.upper_bound(i) != shards.end();
-      if (mostCases < 2 && !laterShardHasCases) continue;
-      notes.push_back(fmt::format(
-          "{} {} empty and stand{} for shard {}/{}{}, but shard {}/{} had cases (the other shards "
-          "hold up to {} each): unless an expectations file skipped every one of them, its "
-          "results are missing from this merge; merge its results file",
-          fmt::join(empty, ", "), empty.size() == 1 ? "is" : "are", empty.size() == 1 ? "s" : "", i,
-          count, ofTheRun(selection), i, count, mostCases));
-    }
-  }
-  return notes;
 }
 
 }  // namespace snell

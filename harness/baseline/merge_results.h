@@ -21,10 +21,4 @@ struct ResultsFile {
 std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
                                      const std::vector<Case>& catalog);
 
-// A note for each missing shard that an empty file stands for where the
-// other shards show it had cases: an empty file is meant for a shard with
-// none. (Its cases may all have been skipped, so it is a note, not an
-// error.)
-std::vector<std::string> notesOnEmptyShards(const std::vector<ResultsFile>& files);
-
 }  // namespace snell

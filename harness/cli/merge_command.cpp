@@ -120,8 +120,6 @@ Command addMergeCommand(CLI::App& app) {
                       "shards (snell run --json)",
                       fmt::join(options->inputs, ", "), options->inputs.size() == 1 ? "s" : ""));
     std::vector<CaseResult> results = mergeResults(files, catalog);
-    for (const std::string& note : notesOnEmptyShards(files))
-      printMessage(stderr, "snell: note: {}\n", note);
     std::vector<std::string> backends;
     for (const CaseResult& r : results)
       if (std::find(backends.begin(), backends.end(), r.backend) == backends.end())

@@ -294,6 +294,11 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                  "snell: note: --validation checks Vulkan backends only, and this run has none "
                  "({})\n",
                  fmt::join(backends, ", "));
+  // The run's cases before the shard takes its own: each record counts every
+  // shard's (below), once the skips are known.
+  std::vector<std::string> runCaseIds;
+  if (shard)
+    for (const Case& c : run.cases) runCaseIds.push_back(c.id);
   if (shard) {
     std::vector<Case> mine;
     for (std::size_t k = 0; k < run.cases.size(); ++k)
@@ -323,6 +328,15 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                           shellWord(options.filter.empty() ? "*" : options.filter),
                           shellWord(options.backend))
             : "";
+  std::vector<std::size_t> shardCases;
+  if (shard) {
+    shardCases.assign(shard->count, 0);
+    for (std::size_t k = 0; k < runCaseIds.size(); ++k)
+      if (std::any_of(backends.begin(), backends.end(), [&](const std::string& backend) {
+            return run.expectations.of(backend).skip(runCaseIds[k]) == nullptr;
+          }))
+        ++shardCases[k % shard->count];
+  }
   // One slot per result the run gives, in order: a case already finished in
   // the resumed file keeps its result; the others become tasks.
   std::vector<Task> tasks;
@@ -342,6 +356,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
         resumedImages = resumedImages || c.spec.has("image");
         done->second.shard = shardLabel;
         done->second.shardOf = shardOf;
+        done->second.shardCases = shardCases;
         slots.emplace_back(std::move(done->second));
         resumed.erase(done);
         continue;
@@ -426,6 +441,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     if (result.phases.total() == 0.0) result.phases[Phase::Other] = result.seconds;
     result.shard = shardLabel;
     result.shardOf = shardOf;
+    result.shardCases = shardCases;
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                  result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(jsonText(toJson(result)));

@@ -47,6 +47,10 @@ struct CaseResult {
   // --backend as given), so that a merge can tell shards of different runs,
   // whose cases together are not one run's.
   std::string shardOf;
+  // With `shard`: how many cases each shard of that run holds (those not
+  // skipped on every backend), so that a merge can tell whether a shard
+  // none of its inputs holds had cases to give.
+  std::vector<std::size_t> shardCases;
 
   // One vector (or scalar) per captured output per vertex.
   std::size_t vectorsChecked() const { return vertices * varyings.size(); }

@@ -71,6 +71,7 @@ nlohmann::json toJson(const CaseResult& r) {
                            {"reruns", reruns}};
   if (!r.shard.empty()) record["shard"] = r.shard;
   if (!r.shardOf.empty()) record["shard_of"] = r.shardOf;
+  if (!r.shardCases.empty()) record["shard_cases"] = r.shardCases;
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
   return record;
 }
@@ -105,6 +106,15 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   if (j.contains("shard")) r.shard = field<std::string>(j, "shard");
   // Absent from records written before shards named their selection.
   if (j.contains("shard_of")) r.shardOf = field<std::string>(j, "shard_of");
+  // Absent from records written before shards counted each other's cases.
+  if (j.contains("shard_cases")) {
+    const nlohmann::json& counts = j.at("shard_cases");
+    if (!counts.is_array())
+      throw nlohmann::json::type_error::create(302, "\"shard_cases\" must be an array of counts",
+                                               &counts);
+    for (const nlohmann::json& count : counts)
+      r.shardCases.push_back(jsonCount<std::size_t>(count));
+  }
   // Absent from records written before reruns existed.
   if (j.contains("reruns"))
     for (const nlohmann::json& s : j.at("reruns"))

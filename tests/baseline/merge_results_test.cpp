@@ -193,37 +193,46 @@ TEST(MergeResults, AMissingShardIsRefusedAndAnEmptyFileStandsForOne) {
   EXPECT_THROW(mergeResults({wholeGl, vk1}, catalog), UsageError);
 }
 
-// An empty file is meant for a shard with no cases. Where the other shards
-// show that the one it stands for had cases (a shard with two cases, or a
-// later shard with one), the merge says its results are missing.
-TEST(MergeResults, AnEmptyFileForAShardThatHadCasesIsNoted) {
-  const auto of = [](CaseResult r, const char* shard) {
+// Records count the cases of every shard of their run: a missing shard
+// that had cases is refused whatever empty files are given, one that had
+// none needs no file (its cases all skipped, or more shards than cases).
+TEST(MergeResults, RecordsSayWhichShardsHadCases) {
+  const std::vector<Case> catalog = {imageCase("a", false), imageCase("b", false),
+                                     imageCase("c", false), imageCase("d", false)};
+  const auto of = [](CaseResult r, const char* shard, std::vector<std::size_t> cases) {
     r.shard = shard;
-    r.shardOf = "--filter '*' --backend gl";
+    r.shardOf = "--filter '*' --backend gl,vk";
+    r.shardCases = std::move(cases);
     return r;
   };
   const ResultsFile empty{"e.jsonl", {}};
-  // Three cases in four shards: shard 4/4 had none.
-  const ResultsFile a{"1.jsonl", {of(result("a", "gl"), "1/4")}};
-  const ResultsFile b{"2.jsonl", {of(result("b", "gl"), "2/4")}};
-  const ResultsFile c{"3.jsonl", {of(result("c", "gl"), "3/4")}};
-  EXPECT_TRUE(notesOnEmptyShards({a, b, c, empty}).empty());
-  EXPECT_TRUE(notesOnEmptyShards({a, b, c}).empty());
-  // Shard 2/4 is missing, and shard 3/4 holds a case: 2/4 had one too.
-  const std::vector<std::string> later = notesOnEmptyShards({a, c, empty});
-  ASSERT_EQ(later.size(), 1u);
-  EXPECT_NE(later[0].find("e.jsonl is empty and stands for shard 2/4 of the run of --filter '*' "
-                          "--backend gl, but shard 2/4 had cases"),
-            std::string::npos)
-      << later[0];
-  // Six cases in three shards: each shard had two.
-  const ResultsFile ad{"1.jsonl", {of(result("a", "gl"), "1/3"), of(result("d", "gl"), "1/3")}};
-  const ResultsFile be{"2.jsonl", {of(result("b", "gl"), "2/3"), of(result("e", "gl"), "2/3")}};
-  const std::vector<std::string> last = notesOnEmptyShards({ad, be, empty});
-  ASSERT_EQ(last.size(), 1u);
-  EXPECT_NE(last[0].find("shard 3/3 had cases (the other shards hold up to 2 each)"),
-            std::string::npos)
-      << last[0];
+  // Three cases in four shards, the third skipped: shards 3 and 4 had none.
+  const std::vector<std::size_t> plan{1, 1, 0, 0};
+  const ResultsFile one{"1.jsonl",
+                        {of(result("a", "gl"), "1/4", plan), of(result("a", "vk"), "1/4", plan)}};
+  const ResultsFile two{"2.jsonl", {of(result("b", "gl"), "2/4", plan)}};
+  EXPECT_EQ(mergeResults({one, two}, catalog).size(), 3u);
+  EXPECT_EQ(mergeResults({one, two, empty, empty}, catalog).size(), 3u);
+  for (const CaseResult& r : mergeResults({one, two}, catalog)) EXPECT_TRUE(r.shardCases.empty());
+  // Shard 2 had a case: an empty file does not stand for it.
+  for (const std::vector<ResultsFile>& files :
+       {std::vector<ResultsFile>{one, empty}, std::vector<ResultsFile>{one}}) {
+    try {
+      mergeResults(files, catalog);
+      ADD_FAILURE() << "merged without shard 2";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("no results of shard 2/4 (1 case) of the run of "
+                                           "--filter '*' --backend gl,vk"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  // The last shard with a case, missing, is found as any other.
+  const std::vector<std::size_t> full{1, 1, 1, 1};
+  const ResultsFile a{"1.jsonl", {of(result("a", "gl"), "1/4", full)}};
+  const ResultsFile b{"2.jsonl", {of(result("b", "gl"), "2/4", full)}};
+  const ResultsFile c{"3.jsonl", {of(result("c", "gl"), "3/4", full)}};
+  EXPECT_THROW(mergeResults({a, b, c, empty}, catalog), UsageError);
 }
 
 }  // namespace

@@ -35,8 +35,12 @@ TEST(CaseResultJson, RoundTripsEveryField) {
   r.phases[Phase::Start] = 0.125;
   r.phases[Phase::Oracle] = 0.25;
   r.phases[Phase::Draw] = 0.5;
+  r.shard = "2/3";
+  r.shardOf = "--filter '*' --backend vk";
+  r.shardCases = {2, 1, 0};
   const CaseResult back = caseResultFromJson(nlohmann::json::parse(toJson(r).dump()));
   EXPECT_EQ(toJson(back), toJson(r));
+  EXPECT_EQ(back.shardCases, (std::vector<std::size_t>{2, 1, 0}));
   EXPECT_TRUE(std::isinf(back.varyings[0].worstSlack));
   EXPECT_EQ(back.status, Status::Fail);
   EXPECT_DOUBLE_EQ(back.phases[Phase::Start], 0.125);
@@ -52,6 +56,16 @@ TEST(CaseResultJson, PhasesAreOptionalButMustBeAnObject) {
   EXPECT_THROW(caseResultFromJson(bad), nlohmann::json::exception);
   bad["phases"] = {{"draw", "slow"}};
   EXPECT_THROW(caseResultFromJson(bad), nlohmann::json::exception);
+}
+
+TEST(CaseResultJson, ShardCasesAreOptionalButMustBeCounts) {
+  nlohmann::json record = toJson(CaseResult{});
+  EXPECT_TRUE(caseResultFromJson(record).shardCases.empty());
+  for (const nlohmann::json& bad :
+       {nlohmann::json(3), nlohmann::json::parse("[1, -1]"), nlohmann::json::parse(R"(["a"])")}) {
+    record["shard_cases"] = bad;
+    EXPECT_THROW(caseResultFromJson(record), nlohmann::json::exception) << bad.dump();
+  }
 }
 
 TEST(CaseResultJson, MalformedRecordThrows) {
