@@ -261,4 +261,9 @@ void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath&
           file.option, file.path.string(), golden.option, golden.path.string()));
 }
 
+bool isAtOrWithin(const fs::path& path, const fs::path& place) {
+  const fs::path relative = identity(path).lexically_relative(identity(place));
+  return !relative.empty() && *relative.begin() != "..";
+}
+
 }  // namespace snell::cli

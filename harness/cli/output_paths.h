@@ -40,6 +40,10 @@ void checkInputsOnce(const std::vector<OutputPath>& inputs);
 // one that bless writes.
 void checkNotGoldenFiles(const std::vector<OutputPath>& files, const OutputPath& golden);
 
+// Whether `path` is `place` or lies inside it, whether or not either
+// exists yet (links followed where they exist).
+bool isAtOrWithin(const std::filesystem::path& path, const std::filesystem::path& place);
+
 // The outermost folder of `path` that does not exist yet, or empty when all
 // of it does: what a command that makes `path` and then fails removes, so
 // that it leaves nothing behind that it made.

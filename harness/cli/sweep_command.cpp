@@ -70,7 +70,9 @@ Command addSweepCommand(CLI::App& app) {
   sweep->add_option("--json", options->json, "Breaks as JSON (default OUT/sweep.json)")
       ->check(nonEmptyPath());
   sweep->add_flag("--quick", options->quick, "A few etas and angles (for tests)");
-  sweep->add_flag("--no-charts", options->noCharts, "Skip the gnuplot charts");
+  sweep->add_flag("--no-charts", options->noCharts,
+                  "Skip the gnuplot charts (an earlier sweep's in --out are removed when "
+                  "sweep.json is written there)");
   sweep->add_option("--timeout", options->timeout, "Seconds each driver may take")
       ->check(CLI::Range(0.001, 86400.0))  // a readable range, not "0 to DBL_MAX"
       ->check(notNan())
@@ -145,6 +147,12 @@ Command addSweepCommand(CLI::App& app) {
       for (const char* own : {"sweep-input.jsonl", "sweep-listing-draws.txt"})
         files.push_back({fmt::format("--out (its {})", own), fs::path(options->out) / own});
     checkOutputs(files, {{"--out", options->out}});
+    if (!options->json.empty() &&
+        isAtOrWithin(options->json, fs::path(options->out) / sweep::kChartDataFolder))
+      throw UsageError(fmt::format(
+          "--json {}: inside {}, the charts' own folder, which every sweep replaces; name a "
+          "file elsewhere",
+          options->json, (fs::path(options->out) / sweep::kChartDataFolder).string()));
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;
     sweepOptions.backends = splitBackendList(options->backend);
@@ -194,9 +202,11 @@ Command addSweepCommand(CLI::App& app) {
         options->json.empty() ? fs::path(options->out) / "sweep.json" : fs::path(options->json);
     sweep::writeSweepJson(result, json);
     sweep::printSweepTable(result, stdout);
-    if (options->noCharts)
+    // With --json elsewhere, an earlier sweep's charts still go with the
+    // sweep.json in --out.
+    if (options->noCharts && isAtOrWithin(json, fs::path(options->out) / "sweep.json"))
       sweep::removeEarlierSweepCharts(options->out);
-    else
+    else if (!options->noCharts)
       for (const fs::path& chart : sweep::writeSweepCharts(result, options->out))
         fmt::print("chart: {}\n", chart.string());
     fmt::print("{} points on {} backend(s) and the oracle, {} Fresnel method samples; JSON: {}\n",

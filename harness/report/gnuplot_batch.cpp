@@ -40,11 +40,11 @@ void GnuplotBatch::add(const std::string& commands) {
 }
 
 void GnuplotBatch::run() {
-  const std::filesystem::path script = dir_ / "charts.gp";
-  const std::filesystem::path log = dir_ / "gnuplot.log";
+  const std::filesystem::path script = dir_ / kScript;
+  const std::filesystem::path log = dir_ / kLog;
   std::ofstream(script) << script_;
   const std::string command =
-      fmt::format("cd '{}' && gnuplot charts.gp >gnuplot.log 2>&1", dir_.string());
+      fmt::format("cd '{}' && gnuplot {} >{} 2>&1", dir_.string(), kScript, kLog);
   const int status = std::system(command.c_str());
   const auto dropDrawings = [&] {
     std::error_code ignored;

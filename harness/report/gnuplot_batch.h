@@ -11,6 +11,10 @@ namespace snell {
 
 class GnuplotBatch {
  public:
+  // The script and gnuplot's output, left in the work folder to read.
+  static constexpr const char* kScript = "charts.gp";
+  static constexpr const char* kLog = "gnuplot.log";
+
   // Data and outputs live in `workDir`, which must exist.
   explicit GnuplotBatch(std::filesystem::path workDir);
 

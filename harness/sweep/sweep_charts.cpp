@@ -36,7 +36,7 @@ std::string safe(const std::string& text) {
 class ChartData {
  public:
   explicit ChartData(fs::path outDir) : outDir_(std::move(outDir)) {
-    fs::create_directories(outDir_ / "sweep-data");
+    fs::create_directories(outDir_ / kChartDataFolder);
   }
   // Appends (x, y) to the named curve's file.
   void add(const std::string& name, double x, double y) {
@@ -47,7 +47,7 @@ class ChartData {
     std::vector<Curve> out;
     for (const auto& [name, rows] : rows_) {
       if (name.rfind(prefix, 0) != 0) continue;
-      const std::string file = "sweep-data/" + safe(name) + ".dat";
+      const std::string file = std::string(kChartDataFolder) + "/" + safe(name) + ".dat";
       std::ofstream(outDir_ / file) << rows;
       out.push_back({name.substr(prefix.size()), file, style});
     }
@@ -164,7 +164,7 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
     std::vector<Curve> plotted;
     int n = 0;
     for (const auto& [classKind, rows] : curves) {
-      const std::string file = fmt::format("sweep-data/{}-{}.dat", stem, n++);
+      const std::string file = fmt::format("{}/{}-{}.dat", kChartDataFolder, stem, n++);
       std::ofstream(outDir / file) << rows;
       plotted.push_back(
           {fmt::format("{} ({})", classKind.second, classKind.first), file,
@@ -208,7 +208,7 @@ void removeEarlierCharts(const fs::path& outDir, const std::vector<fs::path>& wr
 // sweep's data (another backend's) goes with it.
 void removeEarlierChartData(const fs::path& outDir) {
   std::error_code ignored;
-  fs::remove_all(outDir / "sweep-data", ignored);
+  fs::remove_all(outDir / kChartDataFolder, ignored);
 }
 
 }  // namespace
@@ -216,6 +216,9 @@ void removeEarlierChartData(const fs::path& outDir) {
 void removeEarlierSweepCharts(const fs::path& outDir) {
   removeEarlierChartData(outDir);
   removeEarlierCharts(outDir, {});
+  std::error_code ignored;
+  fs::remove(outDir / GnuplotBatch::kScript, ignored);
+  fs::remove(outDir / GnuplotBatch::kLog, ignored);
 }
 
 std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {

@@ -10,13 +10,16 @@
 
 namespace snell::sweep {
 
+// The charts' data, OUTDIR/sweep-data, replaced whole by every sweep.
+inline constexpr const char* kChartDataFolder = "sweep-data";
+
 // Data files go to OUTDIR/sweep-data; returns the chart files written.
 std::vector<std::filesystem::path> writeSweepCharts(const SweepResult& result,
                                                     const std::filesystem::path& outDir);
 
-// An earlier sweep's charts and their data in OUTDIR, for a sweep that
-// draws none (--no-charts): they would stand beside its results and
-// contradict them.
+// An earlier sweep's charts (sweep-*.svg, .png), their data and gnuplot's
+// script and log in OUTDIR, for a sweep that draws none (--no-charts) and
+// writes OUTDIR/sweep.json: they would stand beside it and contradict it.
 void removeEarlierSweepCharts(const std::filesystem::path& outDir);
 
 }  // namespace snell::sweep

@@ -293,6 +293,22 @@ TEST(SweepCli, AnEarlierSweepsChartsDoNotStayBesideANewOnesResults) {
     EXPECT_EQ(entry.path().filename().string().find("-gl-"), std::string::npos) << entry.path();
   EXPECT_TRUE(fs::exists(out / "sweep-notes.txt"));
   EXPECT_TRUE(fs::exists(out / "mine.png"));
+  // A sweep that draws no charts and writes its results elsewhere leaves
+  // the earlier ones: they go with the sweep.json in --out, not rewritten.
+  const Outcome elsewhere = runSnell(
+      fmt::format("sweep --backend vk --quick --no-builtins --listings 'orange-book/14.1-fresnel' "
+                  "--no-charts --out {0} --json {0}-elsewhere.json",
+                  out.string()));
+  ASSERT_TRUE(elsewhere.code == 0 || elsewhere.code == 1) << elsewhere.out;
+  EXPECT_TRUE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
+  fs::remove(out.string() + "-elsewhere.json");
+  // Nor is --json taken inside the charts' data folder, which every sweep
+  // replaces.
+  const Outcome inData = runSnell(fmt::format(
+      "sweep --backend vk --quick --no-builtins --no-charts --out {0} --json {0}/sweep-data/x.json",
+      out.string()));
+  EXPECT_EQ(inData.code, 2) << inData.out;
+  EXPECT_NE(inData.out.find("the charts' own folder"), std::string::npos) << inData.out;
   // A sweep that draws no charts leaves none of the earlier ones either.
   const Outcome noCharts = runSnell(
       fmt::format("sweep --backend vk --quick --no-builtins --listings 'orange-book/14.1-fresnel' "
@@ -302,6 +318,8 @@ TEST(SweepCli, AnEarlierSweepsChartsDoNotStayBesideANewOnesResults) {
   EXPECT_TRUE(fs::exists(out / "sweep.json"));
   EXPECT_FALSE(fs::exists(out / "sweep-map-listing-orange-book-14.1-fresnel-vk.png"));
   EXPECT_FALSE(fs::exists(out / "sweep-data"));
+  EXPECT_FALSE(fs::exists(out / "charts.gp"));
+  EXPECT_FALSE(fs::exists(out / "gnuplot.log"));
   for (const auto& entry : fs::directory_iterator(out))
     EXPECT_FALSE(entry.path().filename().string().starts_with("sweep-") &&
                  (entry.path().extension() == ".svg" || entry.path().extension() == ".png"))
