@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "backends/driver_variables.h"
 #include "core/errors.h"
 
 namespace snell {
@@ -39,7 +40,7 @@ const BackendRegistry& backendRegistry() {
 }
 
 void applyBackendEnvironment(const BackendEntry& entry) {
-  for (const auto& [name, value] : entry.environment) setenv(name.c_str(), value.c_str(), 1);
+  for (const auto& [name, value] : entry.environment) setDriverVariable(entry.name, name, value);
 }
 
 std::unique_ptr<Backend> makeBackend(const std::string& name, const BackendOptions& options) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <utility>
 
+#include "backends/driver_variables.h"
 #include "backends/gl/gl_context_state.h"
 #include "backends/gl/gl_driver_info.h"
 #include "backends/gl/gl_named_driver.h"
@@ -29,10 +30,11 @@ class GlBackend final : public Backend {
       const char* value = ownVariable ? nullptr : std::getenv(name);
       return std::string(value ? value : "");
     };
-    if (std::string why =
-            whyNotTheNamedDriver(config_.name, config_.rendererPrefix, info_,
-                                 {user(config_.setsGalliumDriver, "GALLIUM_DRIVER"),
-                                  user(config_.setsVectorWidth, "LP_NATIVE_VECTOR_WIDTH")});
+    if (std::string why = whyNotTheNamedDriver(
+            config_.name, config_.rendererPrefix, info_,
+            {user(config_.setsGalliumDriver, "GALLIUM_DRIVER"),
+             user(config_.setsVectorWidth, "LP_NATIVE_VECTOR_WIDTH"),
+             driverVariableSetBy("GALLIUM_DRIVER"), driverVariableSetBy("LP_NATIVE_VECTOR_WIDTH")});
         !why.empty())
       throw SetupError(why);
   }

@@ -10,11 +10,14 @@
 
 namespace snell {
 
-// The variables a user left in the environment that choose among Mesa's
-// drivers ("" when unset, or when the backend's own environment sets them).
+// The variables left in the environment that choose among Mesa's drivers
+// ("" when unset, or when the backend's own environment sets them), and
+// the backend that set each in this process ("" for the user's own).
 struct UserDriverVariables {
   std::string galliumDriver;  // GALLIUM_DRIVER
   std::string vectorWidth;    // LP_NATIVE_VECTOR_WIDTH
+  std::string galliumDriverSetBy;
+  std::string vectorWidthSetBy;
 };
 
 // Empty when `got`'s renderer starts with `rendererPrefix` (an empty

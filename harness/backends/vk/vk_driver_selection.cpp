@@ -1,7 +1,5 @@
 #include "backends/vk/vk_driver_selection.h"
 
-#include <fmt/format.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -23,15 +21,6 @@ std::string describeDriverSelection() {
   std::error_code ignored;
   if (std::filesystem::exists(kLavapipeManifest, ignored)) return "every installed ICD";
   return std::string("VK_DRIVER_FILES unset and ") + kLavapipeManifest + " missing";
-}
-
-std::string whyNotLavapipeAtItsNativeWidth(const std::string& backend, const std::string& renderer,
-                                           const char* vectorWidth) {
-  if (!vectorWidth || !*vectorWidth || renderer.find("llvmpipe") == std::string::npos) return "";
-  return fmt::format(
-      "{} is lavapipe at its native vector width, and LP_NATIVE_VECTOR_WIDTH={} is set in the "
-      "environment ({}): unset it (gl:llvmpipe-128 sets it for its own driver)",
-      backend, vectorWidth, renderer);
 }
 
 }  // namespace snell::vk

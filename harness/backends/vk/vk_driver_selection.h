@@ -15,11 +15,4 @@ void selectLavapipeUnlessOverridden();
 // "VK_DRIVER_FILES=..." or similar, for error messages.
 std::string describeDriverSelection();
 
-// Why `backend` does not come up on `renderer` when the environment sets
-// LP_NATIVE_VECTOR_WIDTH (`vectorWidth`, null when unset): lavapipe at
-// another width is another driver than the one vk's goldens were blessed
-// on, as llvmpipe's is for gl. "" when it may.
-std::string whyNotLavapipeAtItsNativeWidth(const std::string& backend, const std::string& renderer,
-                                           const char* vectorWidth);
-
 }  // namespace snell::vk
