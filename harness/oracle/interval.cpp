@@ -267,7 +267,7 @@ Interval operator/(const Interval& aIn, const Interval& bIn) {
   if (smallest < 0x1p-126 || largest > 0x1p126) return Interval::unconstrained();
   if (b.idealLo <= 0.0 && b.idealHi >= 0.0) return Interval::unconstrained();
   const Range quotients = float_sets::quotientRange(a.lo, a.hi, b.lo, b.hi);
-  const Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
+  Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
   const Range ideal = float_sets::quotientRange(a.idealLo, a.idealHi, b.idealLo, b.idealHi);
   // |a'/b' - a/b| <= (|a' - a| |b| + |a| |b' - b|) / (|b'| |b|), then the
   // 2.5 ULP of the division itself at the computed quotient.
@@ -275,8 +275,25 @@ Interval operator/(const Interval& aIn, const Interval& bIn) {
   const double propagated =
       (a.err * maxAbs(b.idealLo, b.idealHi) + maxAbs(a.idealLo, a.idealHi) * b.err) /
       (smallest * idealSmallest);
-  const double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients.lo, quotients.hi)) +
-                     float_sets::flushError(quotients.lo, quotients.hi);
+  double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients.lo, quotients.hi)) +
+               float_sets::flushError(quotients.lo, quotients.hi);
+  if (currentPrecisionRules() == PrecisionRules::Vulkan) {
+    // Vulkan lets an implementation rearrange by any property of exact
+    // arithmetic ("Evaluation of Expressions"): a / b as a * (1 / b), the
+    // reciprocal within its 2.5 ULP, then one rounding of the product. Its
+    // own error: |a'| times the reciprocal's, then the product's rounding.
+    const Range reciprocals = float_sets::quotientRange(1.0, 1.0, b.lo, b.hi);
+    const Range reciprocal = float_sets::withinUlps(reciprocals.lo, reciprocals.hi, 2.5);
+    const Range products = float_sets::roundedProduct(a.lo, a.hi, reciprocal.lo, reciprocal.hi);
+    if (std::isnan(products.lo) || std::isnan(products.hi)) return Interval::unconstrained();
+    set.lo = std::min(set.lo, products.lo);
+    set.hi = std::max(set.hi, products.hi);
+    const double viaReciprocal =
+        maxAbs(a.lo, a.hi) * (2.5 * fp32_bits::gapAbove(maxAbs(reciprocals.lo, reciprocals.hi)) +
+                              float_sets::flushError(reciprocal.lo, reciprocal.hi)) +
+        float_sets::roundingError(products.lo, products.hi);
+    own = std::max(own, float_sets::up(viaReciprocal));
+  }
   Interval r = leafValue(set.lo, set.hi, ideal.lo, ideal.hi, float_sets::up(propagated + own));
   if (aIn.constant && bIn.constant) addFold(r, aIn.folded / bIn.folded);
   return r;

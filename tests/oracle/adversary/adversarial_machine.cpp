@@ -522,6 +522,15 @@ Adv operator/(const Adv& a, const Adv& b) {
     if (std::isfinite(value) && foldedOf(b) != 0.0) return leaf(foldToFloat(value), true, value);
   }
   const bool constant = isConstant(a) && isConstant(b);
+  if (tState.rules == PrecisionRules::Vulkan && percent(50)) {
+    // Vulkan's rearrangement by the properties of exact arithmetic: a / b
+    // as a * (1 / b), the reciprocal within its 2.5 ULP, the dividend
+    // evaluated whole (the oracle takes it closed), one rounding of the
+    // product.
+    const Adv reciprocal = leaf(quotient(1.0f, b.value()));
+    if (isUndefined(reciprocal)) return leaf(kNaN);
+    return leaf((leaf(a.value()) * reciprocal).value(), constant, foldedOf(a) / foldedOf(b));
+  }
   return leaf(quotient(a.value(), b.value()), constant, foldedOf(a) / foldedOf(b));
 }
 

@@ -143,6 +143,16 @@ TEST(Adversary, MachineMirrorsAnInheritedBuiltInUnderVulkan) {
   EXPECT_LT(*power.begin(), *formula.begin());
 }
 
+TEST(Adversary, MachineDividesByAReciprocalUnderVulkan) {
+  // a * (1 / b), each step at its bound, reaches past a / b's own 2.5 ULP
+  // for these (an escape the oracle had under the Vulkan rules).
+  const auto divide = [] { return Adv(2.13379121f) / Adv(0.85081625f); };
+  const auto vulkan = spread(divide, PrecisionRules::Vulkan);
+  const auto glsl = spread(divide, PrecisionRules::Glsl);
+  EXPECT_GT(*vulkan.rbegin(), *glsl.rbegin());
+  EXPECT_TRUE(vulkan.count(2.50793505f));
+}
+
 TEST(Adversary, MachineFoldsConstantsEitherWay) {
   // 0.66 * 0.66 folded in double from the decimals: either neighbour of 0.4356.
   const auto folded = spread([] { return Adv::literal(0.66) * Adv::literal(0.66); });
