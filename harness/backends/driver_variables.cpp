@@ -37,9 +37,9 @@ std::string whyNotAtNativeVectorWidth(const std::string& backend, const std::str
       "{} is {} at its native vector width, and LP_NATIVE_VECTOR_WIDTH={}", backend, driver, width);
   if (!setBy.empty())
     return fmt::format(
-        "{}, which {} set for its own driver earlier in this process, reached it ({}): bring {} "
-        "up before {}, or in a command of its own",
-        head, setBy, renderer, backend, setBy);
+        "{}, which {} set for its own driver earlier in this process, reached it ({}): run {} in "
+        "a command of its own",
+        head, setBy, renderer, backend);
   return fmt::format(
       "{} is set in the environment ({}): unset it{}", head, renderer,
       alternative.empty()

@@ -37,7 +37,13 @@ ShardsOfRuns shardsOfRuns(const std::vector<ResultsFile>& files) {
       }
       ShardsOfRun& run = seen[{r.shardOf, shard.count}];
       run.given.insert(shard.index);
-      if (run.cases.empty() && r.shardCases.size() == shard.count) run.cases = r.shardCases;
+      // Runners may count apart (a skip list a day older, a backend that
+      // did not come up): a shard had cases if any record says so.
+      if (r.shardCases.size() == shard.count) {
+        run.cases.resize(shard.count, 0);
+        for (std::size_t i = 0; i < shard.count; ++i)
+          run.cases[i] = std::max(run.cases[i], r.shardCases[i]);
+      }
     }
   for (const auto& [count, indices] : unnamed) {
     bool joined = false;

@@ -60,17 +60,24 @@ std::string userFolderFlags(const SuiteOptions& options) {
   return flags;
 }
 
-std::vector<std::string> backendsToRun(const SuiteOptions& options,
-                                       std::map<std::string, DriverInfo>* drivers) {
-  const bool all = options.backend == "all";
+// The backends --backend names (every one `all` takes), whether or not
+// they come up here.
+std::vector<std::string> wantedBackends(const SuiteOptions& options) {
   std::vector<std::string> wanted;
-  if (all) {
+  if (options.backend == "all") {
     for (const BackendEntry& e : backendRegistry().entries())
       if (e.inAll) wanted.push_back(e.name);
   } else {
     for (const std::string& name : splitBackendList(options.backend))
       wanted.push_back(backendRegistry().find(name).name);
   }
+  return wanted;
+}
+
+std::vector<std::string> backendsToRun(const SuiteOptions& options,
+                                       std::map<std::string, DriverInfo>* drivers) {
+  const bool all = options.backend == "all";
+  const std::vector<std::string> wanted = wantedBackends(options);
   // Brought up as the cases' workers bring it up: a validation layer that
   // is not installed failed every case as a Crash, each saying why.
   std::vector<std::string> probeArgs = workerBackendArgs(options);
@@ -328,11 +335,14 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                           shellWord(options.filter.empty() ? "*" : options.filter),
                           shellWord(options.backend))
             : "";
+  // Counted over the backends the run asks for, not those up here: another
+  // runner of the same run may have more up.
   std::vector<std::size_t> shardCases;
   if (shard) {
+    const std::vector<std::string> wanted = wantedBackends(options);
     shardCases.assign(shard->count, 0);
     for (std::size_t k = 0; k < runCaseIds.size(); ++k)
-      if (std::any_of(backends.begin(), backends.end(), [&](const std::string& backend) {
+      if (std::any_of(wanted.begin(), wanted.end(), [&](const std::string& backend) {
             return run.expectations.of(backend).skip(runCaseIds[k]) == nullptr;
           }))
         ++shardCases[k % shard->count];

@@ -17,6 +17,9 @@ inline double slack(double observed, double reference, double lo, double hi) {
   if (observed == reference) return 0.0;
   const double allowed = observed > reference ? hi - reference : reference - lo;
   if (!(allowed > 0)) return kOutside;  // no room on that side, or a malformed interval
+  // An infinity where that side has no bound (an overflow the spec allows)
+  // sits on its edge; inf / inf would be NaN, counted as outside.
+  if (std::isinf(observed) && std::isinf(allowed)) return 1.0;
   return std::abs(observed - reference) / allowed;
 }
 

@@ -37,6 +37,17 @@ TEST(Slack, NoRoomOrNanIsInfinite) {
   EXPECT_FALSE(withinSpec(std::nan(""), 0.9, 1.1));
 }
 
+// An infinity where the spec leaves that side unbounded (a possible
+// overflow) is within it, on its edge: not NaN, which counts as outside.
+TEST(Slack, AnInfinityOnAnUnboundedSideIsOnItsEdge) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_TRUE(withinSpec(inf, 1.0, inf));
+  EXPECT_EQ(slack(inf, 2.0, 1.0, inf), 1.0);
+  EXPECT_EQ(slack(-inf, 2.0, -inf, 3.0), 1.0);
+  EXPECT_EQ(slack(5.0, 2.0, 1.0, inf), 0.0);
+  EXPECT_TRUE(std::isinf(slack(inf, 2.0, 1.0, 3.0)));
+}
+
 TEST(VectorCheck, PassesInsideTheInterval) {
   CapturedVarying got{"R", 3, {0.5f, -0.25f, 1.0f}};
   const VaryingCheck check = checkVarying(expected3(), got);

@@ -71,7 +71,7 @@ TEST(GlNamedDriver, AVariableAnotherBackendSetNamesThatBackend) {
   const std::string gallium =
       whyNotTheNamedDriver("gl", "llvmpipe", kSoftpipe, {"softpipe", "", "gl:softpipe", ""});
   EXPECT_NE(gallium.find("GALLIUM_DRIVER=softpipe, which gl:softpipe set for its own driver "
-                         "earlier in this process, chose it; bring gl up before gl:softpipe"),
+                         "earlier in this process, chose it; run gl in a command of its own"),
             std::string::npos)
       << gallium;
 }

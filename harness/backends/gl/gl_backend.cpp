@@ -1,5 +1,7 @@
 #include "backends/gl/gl_backend.h"
 
+#include <fmt/format.h>
+
 #include <cstdlib>
 #include <iterator>
 #include <memory>
@@ -37,6 +39,16 @@ class GlBackend final : public Backend {
              driverVariableSetBy("GALLIUM_DRIVER"), driverVariableSetBy("LP_NATIVE_VECTOR_WIDTH")});
         !why.empty())
       throw SetupError(why);
+    // Mesa reads LP_NATIVE_VECTOR_WIDTH once per process: where llvmpipe
+    // was already up at another width (`snell bench` with gl before
+    // gl:llvmpipe-128), the backend's own setting did not take.
+    if (const char* width = std::getenv("LP_NATIVE_VECTOR_WIDTH");
+        config_.setsVectorWidth && width &&
+        info_.renderer.find(fmt::format("{} bits", width)) == std::string::npos)
+      throw SetupError(fmt::format(
+          "{} is llvmpipe {} bits wide, but its context came up on {}: llvmpipe was already up "
+          "in this process at another width; run {} in a command of its own",
+          config_.name, width, info_.renderer, config_.name));
   }
 
   std::string name() const override { return config_.name; }

@@ -26,9 +26,8 @@ std::string whyNotTheNamedDriver(const std::string& backend, const std::string& 
   if (!user.galliumDriver.empty() && !user.galliumDriverSetBy.empty())
     return came + fmt::format(
                       ": GALLIUM_DRIVER={}, which {} set for its own driver earlier in this "
-                      "process, chose it; bring {} up before {}, or in a command of its own",
-                      user.galliumDriver, user.galliumDriverSetBy, backend,
-                      user.galliumDriverSetBy);
+                      "process, chose it; run {} in a command of its own",
+                      user.galliumDriver, user.galliumDriverSetBy, backend);
   if (!user.galliumDriver.empty())
     return came + fmt::format(
                       ": GALLIUM_DRIVER={} chose it; unset it, or run the backend named for that "

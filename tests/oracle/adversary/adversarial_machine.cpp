@@ -433,7 +433,10 @@ bool mirrorsUnderVulkan() { return tState.rules == PrecisionRules::Vulkan && per
 // from it than `formula` is.
 float mirroredAbout(float formula, double exact) {
   if (!std::isfinite(formula) || !std::isfinite(exact)) return formula;
-  const double distance = std::fabs(formula - exact) - 2.0 * std::fabs(exact) * kLibmRelative;
+  // The subtraction's own rounding, where the formula is far from the
+  // exact value, is taken off too.
+  const double gap = std::fabs(formula - exact);
+  const double distance = gap - 2.0 * std::fabs(exact) * kLibmRelative - gap * 0x1p-51;
   if (!(distance > 0.0)) return formula;
   return maybeFlush(static_cast<float>(formula > exact ? floatAtOrAbove(exact - distance)
                                                        : floatAtOrBelow(exact + distance)));
