@@ -190,9 +190,25 @@ Interval Interval::point(float value) {
 
 namespace {
 
+// A decimal read into a double first and then rounded to float may round
+// the other way from the decimal rounded to float at once: only where the
+// double is exactly halfway between two floats. Which of them the decimal
+// was nearer is lost, and a driver's compiler may parse either way: both.
+bool isFloatMidpoint(double decimal) {
+  const double below = fp32_bits::floatAtOrBelow(decimal);
+  const double above = fp32_bits::floatAtOrAbove(decimal);
+  return below != above && std::isfinite(below) && std::isfinite(above) &&
+         below + above == 2.0 * decimal;
+}
+
 Interval makeLiteral(double decimal) {
   Interval r = Interval::point(nearestFloat(decimal));
   if (r.undefined) return r;
+  if (isFloatMidpoint(decimal)) {
+    const Range both = float_sets::admitFlushToZero(
+        {fp32_bits::floatAtOrBelow(decimal), fp32_bits::floatAtOrAbove(decimal)});
+    r = Interval(both.lo, both.hi);
+  }
   r.constant = true;
   r.folded = decimal;
   r.region = closedRegion(r);
@@ -257,7 +273,30 @@ Interval operator*(const Interval& a, const Interval& b) {
   return r;
 }
 
+namespace {
+
+Interval divided(const Interval& aIn, const Interval& bIn);
+
+}  // namespace
+
+// Under Vulkan a / b may also be a * (1 / b) with the product distributed
+// over the dividend ("Evaluation of Expressions" allows any property of
+// exact arithmetic): (x + y) / c as x * (1 / c) + y * (1 / c), the
+// reciprocal within its 2.5 ULP. The quotient stays closed to its
+// consumer: a rearrangement across the division, such as a * (b / c) as
+// (a * b) / c, is not modelled (README, "Soundness").
 Interval operator/(const Interval& aIn, const Interval& bIn) {
+  const Interval direct = divided(aIn, bIn);
+  if (direct.undefined || currentPrecisionRules() != PrecisionRules::Vulkan) return direct;
+  const Interval reciprocal = divided(Interval::literal(1.0), bIn);
+  Interval r = withAlternative(direct, aIn * reciprocal);
+  if (!r.undefined && aIn.constant && bIn.constant) addFold(r, aIn.folded / bIn.folded);
+  return r;
+}
+
+namespace {
+
+Interval divided(const Interval& aIn, const Interval& bIn) {
   if (aIn.undefined || bIn.undefined) return Interval::unconstrained();
   const Interval a = closedView(aIn);
   const Interval b = closedView(bIn);
@@ -298,6 +337,8 @@ Interval operator/(const Interval& aIn, const Interval& bIn) {
   if (aIn.constant && bIn.constant) addFold(r, aIn.folded / bIn.folded);
   return r;
 }
+
+}  // namespace
 
 Truth operator<(const Interval& a, const Interval& b) {
   if (a.undefined || b.undefined) return Truth::Unknown;

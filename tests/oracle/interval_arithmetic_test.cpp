@@ -8,6 +8,7 @@
 #include <random>
 
 #include "oracle/interval.h"
+#include "oracle/precision_rules.h"
 
 namespace snell {
 namespace {
@@ -128,7 +129,8 @@ TEST(OracleIntervalArithmetic, DivisionAdmitsExactlyTheFloatsWithin2Point5Ulp) {
 // quotient widened by one double ULP either way used to reach the larger gap
 // above 64 and admit a fifth float below it.
 TEST(OracleIntervalArithmetic, ExactPowerOfTwoQuotientIsNotWidenedIntoTheGapAbove) {
-  const Interval q = Interval::point(0.012243230827152729f) / Interval::point(0.00019130048167426139f);
+  const Interval q =
+      Interval::point(0.012243230827152729f) / Interval::point(0.00019130048167426139f);
   EXPECT_EQ(q.lo, 64.0 - 0x1p-17);
   EXPECT_EQ(q.hi, 64.0 + 0x1p-17);
   const Interval third = Interval::point(1.0f) / Interval::point(3.0f);
@@ -187,6 +189,38 @@ TEST(OracleIntervalArithmetic, HullAndWidth) {
   EXPECT_EQ(h.hi, 2.0);
   EXPECT_EQ(width(h), 5.0);
   EXPECT_TRUE(hull(Interval(1.0, 2.0), Interval::unconstrained()).undefined);
+}
+
+// Vulkan may distribute a division's dividend over the reciprocal:
+// (a + b) / c as a * (1 / c) + b * (1 / c). With 1 / 3 rounded to
+// 0x3eaaaaab, b * (1 / 3) rounds to -0x3eaaaaaa and the sum is 2^-25, far
+// from the exact (a + b) / 3 = 2^-24 / 3.
+TEST(OracleIntervalArithmetic, VulkanMayDistributeADividendOverTheReciprocal) {
+  const Interval a = Interval::point(1.0f);
+  const Interval b = Interval::point(-0.99999994f);
+  const Interval c = Interval::point(3.0f);
+  const float reciprocal = 1.0f / 3.0f;
+  ASSERT_EQ(reciprocal, 0x1.555556p-2f);
+  const float distributed = 1.0f * reciprocal + (-0.99999994f * reciprocal);
+  ASSERT_EQ(distributed, 0x1p-25f);
+  {
+    const UsePrecisionRules use(PrecisionRules::Vulkan);
+    EXPECT_TRUE(contains((a + b) / c, distributed));
+  }
+  const UsePrecisionRules use(PrecisionRules::Glsl);
+  EXPECT_FALSE(contains((a + b) / c, distributed));
+}
+
+// A literal whose double is exactly halfway between two floats: the decimal
+// 1.00000005960464477539062500001 reads as the double 1 + 2^-24, which ties
+// to 1 as a float, while the decimal rounded at once is 1 + 2^-23.
+TEST(OracleIntervalArithmetic, ALiteralOnAFloatMidpointMayBeEitherFloat) {
+  const Interval tie = Interval::literal(1.00000005960464477539062500001);
+  EXPECT_TRUE(contains(tie, 1.0f));
+  EXPECT_TRUE(contains(tie, 1.00000012f));
+  const Interval notTie = Interval::literal(0.1);
+  EXPECT_EQ(notTie.lo, notTie.hi);
+  EXPECT_EQ(notTie.lo, static_cast<double>(0.1f));
 }
 
 }  // namespace

@@ -527,12 +527,13 @@ Adv operator/(const Adv& a, const Adv& b) {
   const bool constant = isConstant(a) && isConstant(b);
   if (tState.rules == PrecisionRules::Vulkan && percent(50)) {
     // Vulkan's rearrangement by the properties of exact arithmetic: a / b
-    // as a * (1 / b), the reciprocal within its 2.5 ULP, the dividend
-    // evaluated whole (the oracle takes it closed), one rounding of the
-    // product.
+    // as a * (1 / b), the reciprocal within its 2.5 ULP, and the product
+    // rounded once after the dividend is evaluated whole, or distributed
+    // over the dividend's sum (x * (1 / b) + y * (1 / b)).
     const Adv reciprocal = leaf(quotient(1.0f, b.value()));
     if (isUndefined(reciprocal)) return leaf(kNaN);
-    return leaf((leaf(a.value()) * reciprocal).value(), constant, foldedOf(a) / foldedOf(b));
+    const Adv dividend = percent(50) ? a : leaf(a.value());
+    return leaf((dividend * reciprocal).value(), constant, foldedOf(a) / foldedOf(b));
   }
   return leaf(quotient(a.value(), b.value()), constant, foldedOf(a) / foldedOf(b));
 }

@@ -26,7 +26,8 @@
 // - under the Vulkan rules, may return sqrt and pow (whose precision is
 //   inherited from a formula) mirrored about the exact result, as the
 //   rule's [x - E, x + E] allows;
-// - under the Vulkan rules, may divide as a * (1 / b);
+// - under the Vulkan rules, may divide as a * (1 / b), distributed over the
+//   dividend's sum or not;
 // - may re-evaluate a shared subexpression at each use, or compute it once.
 //
 // A value the spec leaves undefined (log2 or inversesqrt of x <= 0, sqrt of

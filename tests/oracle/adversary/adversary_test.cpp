@@ -153,6 +153,14 @@ TEST(Adversary, MachineDividesByAReciprocalUnderVulkan) {
   EXPECT_TRUE(vulkan.count(2.50793505f));
 }
 
+TEST(Adversary, MachineDistributesADividendOverTheReciprocalUnderVulkan) {
+  // (a + b) / 3 as a * (1 / 3) + b * (1 / 3): 2^-25, where the exact
+  // quotient is 2^-24 / 3.
+  const auto divide = [] { return (Adv(1.0f) + Adv(-0.99999994f)) / Adv(3.0f); };
+  EXPECT_TRUE(spread(divide, PrecisionRules::Vulkan).count(0x1p-25f));
+  EXPECT_FALSE(spread(divide, PrecisionRules::Glsl).count(0x1p-25f));
+}
+
 TEST(Adversary, MachineFoldsConstantsEitherWay) {
   // 0.66 * 0.66 folded in double from the decimals: either neighbour of 0.4356.
   const auto folded = spread([] { return Adv::literal(0.66) * Adv::literal(0.66); });
