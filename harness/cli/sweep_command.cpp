@@ -24,6 +24,31 @@
 #include "sweep/sweep_run.h"
 
 namespace snell::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// --json on a file that the sweep writes or removes in --out (its input, a
+// driver's batch, the listings' job file, a chart, gnuplot's script or log)
+// was overwritten, or removed as an earlier sweep's chart, with exit 0; in
+// the charts' data folder it was removed with the folder. Refused by name,
+// whether or not such a file is there yet.
+void refuseJsonOnOwnFiles(const fs::path& json, const fs::path& out) {
+  const fs::path folder = fs::absolute(json).parent_path();
+  const std::string role = sweep::ownFileRole(json.filename().string());
+  if (!role.empty() && isAtOrWithin(folder, out) && isAtOrWithin(out, folder))
+    throw UsageError(fmt::format(
+        "--json {}: in --out {}, a file of this name is the sweep's own ({}), which it writes "
+        "or removes; name a file of another name, or one elsewhere",
+        json.string(), out.string(), role));
+  if (isAtOrWithin(json, out / sweep::kChartDataFolder))
+    throw UsageError(fmt::format(
+        "--json {}: inside {}, the charts' own folder, which every sweep replaces; name a "
+        "file elsewhere",
+        json.string(), (out / sweep::kChartDataFolder).string()));
+}
+
+}  // namespace
 
 Command addSweepCommand(CLI::App& app) {
   CLI::App* sweep = app.add_subcommand(
@@ -85,7 +110,6 @@ Command addSweepCommand(CLI::App& app) {
       "break was found; 2, before anything is swept, when none of the listings --listings\n"
       "names (or, with --no-builtins, no listing at all) can be swept, each with its reason.");
   return [options, sweep] {
-    namespace fs = std::filesystem;
     if (!options->listingWorker.empty()) {
       BackendOptions backendOptions;
       backendOptions.device = options->device;
@@ -141,18 +165,8 @@ Command addSweepCommand(CLI::App& app) {
       driverArgs.insert(driverArgs.end(), {"--gl-provider", options->glProvider});
     std::vector<OutputPath> files;
     if (!options->json.empty()) files.push_back({"--json", options->json});
-    // The files the sweep writes in --out for its own use: --json on one of
-    // them was overwritten by it, or overwrote it.
-    if (fs::is_directory(options->out))
-      for (const char* own : {"sweep-input.jsonl", "sweep-listing-draws.txt"})
-        files.push_back({fmt::format("--out (its {})", own), fs::path(options->out) / own});
     checkOutputs(files, {{"--out", options->out}});
-    if (!options->json.empty() &&
-        isAtOrWithin(options->json, fs::path(options->out) / sweep::kChartDataFolder))
-      throw UsageError(fmt::format(
-          "--json {}: inside {}, the charts' own folder, which every sweep replaces; name a "
-          "file elsewhere",
-          options->json, (fs::path(options->out) / sweep::kChartDataFolder).string()));
+    if (!options->json.empty()) refuseJsonOnOwnFiles(options->json, options->out);
     sweep::SweepOptions sweepOptions;
     sweepOptions.executable = executable;
     sweepOptions.backends = splitBackendList(options->backend);

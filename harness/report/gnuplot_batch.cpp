@@ -30,7 +30,7 @@ void GnuplotBatch::add(const std::string& commands) {
     const std::size_t end = commands.find('\'', begin);
     if (end == std::string::npos) break;
     const std::filesystem::path output = commands.substr(begin, end - begin);
-    const std::filesystem::path drawing = output.string() + ".drawing";
+    const std::filesystem::path drawing = output.string() + kDrawing;
     outputs_.emplace_back(drawing, output);
     drawn += commands.substr(from, begin - from) + drawing.string();
     from = end;

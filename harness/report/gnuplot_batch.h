@@ -14,6 +14,8 @@ class GnuplotBatch {
   // The script and gnuplot's output, left in the work folder to read.
   static constexpr const char* kScript = "charts.gp";
   static constexpr const char* kLog = "gnuplot.log";
+  // What each output is drawn to first, beside it: OUTPUT.drawing.
+  static constexpr const char* kDrawing = ".drawing";
 
   // Data and outputs live in `workDir`, which must exist.
   explicit GnuplotBatch(std::filesystem::path workDir);

@@ -101,7 +101,7 @@ ListingSweepResult runListingSweep(const ListingSweepOptions& options) {
   }
   result.draws = draws.size();
   std::filesystem::create_directories(options.outDir);
-  const std::filesystem::path jobFile = options.outDir / "sweep-listing-draws.txt";
+  const std::filesystem::path jobFile = options.outDir / kListingJobFile;
   {
     std::ofstream job(jobFile);
     for (const DrawSpec& d : draws) job << drawLine(d) << '\n';

@@ -14,6 +14,10 @@
 
 namespace snell::sweep {
 
+// The draws, one line each, that the driver children read: written to
+// ListingSweepOptions::outDir and removed when the sweep ends.
+inline constexpr const char* kListingJobFile = "sweep-listing-draws.txt";
+
 struct ListingSweepOptions {
   std::string executable;               // the snell binary (its `sweep --listing-worker`)
   std::vector<std::string> backends;    // drivers

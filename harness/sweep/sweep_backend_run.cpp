@@ -171,7 +171,7 @@ struct DriverRun {
     std::vector<SweepPoint> chosen;
     for (std::size_t k : subset) chosen.push_back(points[k]);
     const std::filesystem::path input =
-        workDir / fmt::format("sweep-input-{}-{}.jsonl", childrenLeft, subset.size());
+        workDir / fmt::format("{}{}-{}.jsonl", kBatchPrefix, childrenLeft, subset.size());
     std::ofstream(input) << evalInput(chosen);
     --childrenLeft;
     bool hung = false;

@@ -21,6 +21,9 @@ BackendSweep sweepOracle(const std::vector<SweepPoint>& points);
 // The points as `snell eval` input, one JSON line each (exact fp32 values).
 std::string evalInput(const std::vector<SweepPoint>& points);
 
+// Each child's input in the work folder: PREFIX<children left>-<points>.jsonl.
+inline constexpr const char* kBatchPrefix = "sweep-input-";
+
 // `executable` is the snell binary; each child's input is written to
 // `workDir` and removed after. When a child crashes, the points it left
 // unanswered are run again in halves (at most `maxChildren` children in

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <string_view>
 #include <system_error>
 
 #include "report/gnuplot_batch.h"
@@ -184,10 +185,16 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
   }
 }
 
+// The sweep's charts are named sweep-*.svg and .png.
+bool isChartName(const std::string& name) {
+  const fs::path extension = fs::path(name).extension();
+  return name.starts_with("sweep-") && (extension == ".svg" || extension == ".png");
+}
+
 // The charts of an earlier sweep in the same folder that this one did not
 // draw (another backend's map, a listing no longer swept) would stand
-// beside its results and contradict them: the sweep's charts are named
-// sweep-*.svg and .png, and those it did not draw now are removed.
+// beside its results and contradict them: those it did not draw now are
+// removed.
 void removeEarlierCharts(const fs::path& outDir, const std::vector<fs::path>& written) {
   std::set<fs::path> drawn;
   for (const fs::path& path : written) drawn.insert(path.filename());
@@ -195,10 +202,8 @@ void removeEarlierCharts(const fs::path& outDir, const std::vector<fs::path>& wr
   std::vector<fs::path> stale;
   for (const fs::directory_entry& entry : fs::directory_iterator(outDir, error)) {
     const fs::path& path = entry.path();
-    const std::string name = path.filename().string();
-    const bool chart =
-        name.starts_with("sweep-") && (path.extension() == ".svg" || path.extension() == ".png");
-    if (chart && entry.is_regular_file(error) && !drawn.count(path.filename()))
+    if (isChartName(path.filename().string()) && entry.is_regular_file(error) &&
+        !drawn.count(path.filename()))
       stale.push_back(path);
   }
   for (const fs::path& path : stale) fs::remove(path, error);
@@ -219,6 +224,16 @@ void removeEarlierSweepCharts(const fs::path& outDir) {
   std::error_code ignored;
   fs::remove(outDir / GnuplotBatch::kScript, ignored);
   fs::remove(outDir / GnuplotBatch::kLog, ignored);
+}
+
+std::string chartFileRole(const std::string& name) {
+  if (isChartName(name)) return "a chart";
+  const std::string_view drawing = GnuplotBatch::kDrawing;
+  if (name.ends_with(drawing) && isChartName(name.substr(0, name.size() - drawing.size())))
+    return "a chart being drawn";
+  if (name == GnuplotBatch::kScript) return "gnuplot's script";
+  if (name == GnuplotBatch::kLog) return "gnuplot's log";
+  return "";
 }
 
 std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path& outDir) {

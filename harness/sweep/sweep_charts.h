@@ -4,6 +4,7 @@
 // angle x eta of where each built-in, method and listing (per backend)
 // breaks and why. SVG and PNG of each.
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "sweep/sweep_run.h"
@@ -21,5 +22,11 @@ std::vector<std::filesystem::path> writeSweepCharts(const SweepResult& result,
 // script and log in OUTDIR, for a sweep that draws none (--no-charts) and
 // writes OUTDIR/sweep.json: they would stand beside it and contradict it.
 void removeEarlierSweepCharts(const std::filesystem::path& outDir);
+
+// What a file of this name in OUTDIR is to the charts, which write or
+// remove it there: "a chart" (sweep-*.svg, .png: this sweep's are drawn
+// over it, an earlier one's removed), "a chart being drawn", "gnuplot's
+// script" or "gnuplot's log"; empty when it is none of these.
+std::string chartFileRole(const std::string& name);
 
 }  // namespace snell::sweep

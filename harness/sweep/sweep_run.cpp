@@ -10,6 +10,7 @@
 #include "core/errors.h"
 #include "runner/interrupt_flag.h"
 #include "sweep/sweep_backend_run.h"
+#include "sweep/sweep_charts.h"
 
 namespace snell::sweep {
 
@@ -40,6 +41,13 @@ void stopIfInterrupted(const std::filesystem::path& input) {
 
 }  // namespace
 
+std::string ownFileRole(const std::string& name) {
+  if (name == kInputFile) return "its input";
+  if (name.starts_with(kBatchPrefix)) return "a driver's batch of points";
+  if (name == kListingJobFile) return "the listings' job file";
+  return chartFileRole(name);
+}
+
 SweepResult runSweep(const SweepOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SweepResult result;
@@ -47,7 +55,7 @@ SweepResult runSweep(const SweepOptions& options) {
   result.points = options.builtins ? sweepPoints(result.grid) : std::vector<SweepPoint>{};
   result.sweeps.push_back(sweepOracle(result.points));
   std::filesystem::create_directories(options.outDir);
-  const std::filesystem::path input = options.outDir / "sweep-input.jsonl";
+  const std::filesystem::path input = options.outDir / kInputFile;
   {
     std::ofstream file(input);
     file << evalInput(result.points);

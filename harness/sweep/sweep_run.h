@@ -14,10 +14,13 @@
 
 namespace snell::sweep {
 
+// The sweep's points as `snell eval` input, written to SweepOptions::outDir.
+inline constexpr const char* kInputFile = "sweep-input.jsonl";
+
 struct SweepOptions {
   std::string executable;               // the snell binary, whose `eval` runs each driver
   std::vector<std::string> backends;    // drivers; the oracle is always swept
-  std::filesystem::path outDir;         // sweep-input.jsonl goes here
+  std::filesystem::path outDir;         // kInputFile goes here
   bool quick = false;                   // quickGrid() in place of fullGrid()
   double timeoutSeconds = 300;          // per driver
   std::vector<std::string> driverArgs;  // --device, --gl-provider, for every driver child
@@ -41,6 +44,13 @@ struct SweepResult {
 };
 
 SweepResult runSweep(const SweepOptions& options);
+
+// What a file of this name in SweepOptions::outDir is to the sweep, which
+// writes or removes it there besides sweep.json: its input, a driver's
+// batch of points, the listings' job file, a chart or gnuplot's script or
+// log (sweep_charts.h); empty when it is none of its own. (The charts'
+// data is a folder of its own, kChartDataFolder.)
+std::string ownFileRole(const std::string& name);
 
 // Everything after the drivers have answered (for tests that bring their own
 // observations).

@@ -208,8 +208,31 @@ TEST(SweepCli, JsonOnTheSweepsOwnInputFileIsRefused) {
                            "{0}/sweep-input.jsonl",
                            out.string()));
   EXPECT_EQ(o.code, 2) << o.out;
-  EXPECT_NE(o.out.find("and --out (its sweep-input.jsonl)"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("are one file"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("a file of this name is the sweep's own (its input)"), std::string::npos)
+      << o.out;
+  fs::remove_all(out);
+}
+
+// --json in --out on a file the sweep writes or removes there was lost
+// with exit 0: named like an earlier sweep's chart it was removed as one,
+// like one of this sweep's charts, gnuplot's script or log, or a driver's
+// batch of points it was overwritten. Each is refused before the sweep.
+TEST(SweepCli, JsonOnAFileTheSweepWritesOrRemovesInOutIsRefused) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-ownj-{}", ::getpid());
+  fs::remove_all(out);
+  fs::create_directories(out);
+  for (const char* name : {"sweep-map-old.svg", "sweep-refract-slack.svg", "sweep-map-refract.png",
+                           "charts.gp", "gnuplot.log", "sweep-input-40-300.jsonl"}) {
+    const fs::path json = out / name;
+    std::ofstream(json) << "mine";
+    const Outcome o =
+        runSnell(fmt::format("sweep --quick --backend vk --listings '' --out {} --json {}",
+                             out.string(), json.string()));
+    EXPECT_EQ(o.code, 2) << name << ": " << o.out;
+    EXPECT_NE(o.out.find(fmt::format("--json {}: ", json.string())), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("name a file of another name"), std::string::npos) << o.out;
+    EXPECT_EQ(readText(json), "mine") << name;
+  }
   fs::remove_all(out);
 }
 
