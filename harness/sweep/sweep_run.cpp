@@ -79,6 +79,7 @@ SweepResult runSweep(const SweepOptions& options) {
     listing.filter = options.listings == "*" ? "" : options.listings;
     listing.outDir = options.outDir;
     listing.quick = options.quick;
+    listing.timeoutSeconds = options.timeoutSeconds;  // --timeout cuts each draw too
     result.listings = runListingSweep(listing);
     stopIfInterrupted(input);
     result.listingsSwept = true;

@@ -22,7 +22,7 @@ struct SweepOptions {
   std::vector<std::string> backends;    // drivers; the oracle is always swept
   std::filesystem::path outDir;         // kInputFile goes here
   bool quick = false;                   // quickGrid() in place of fullGrid()
-  double timeoutSeconds = 300;          // per driver
+  double timeoutSeconds = 300;          // per driver child, and per listing draw
   std::vector<std::string> driverArgs;  // --device, --gl-provider, for every driver child
   std::vector<PrecisionRules> rules;    // each driver's API rules (for the listings' oracles)
   bool builtins = true;                 // refract() and reflect() themselves

@@ -289,6 +289,23 @@ TEST(SweepCli, EveryPointOutOfTimeNamesTheLimit) {
   fs::remove_all(out);
 }
 
+// The listings' draws were cut at 120 s whatever --timeout said: they
+// are cut at --timeout, as the built-ins' points are.
+TEST(SweepCli, ListingDrawsAreCutAtTheTimeout) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-lto-{}", ::getpid());
+  const Outcome o =
+      runSnell(fmt::format("sweep --backend vk --quick --no-builtins --no-charts --listings "
+                           "'orange-book/14.1-fresnel' --timeout 0.001 --out {}",
+                           out.string()));
+  EXPECT_EQ(o.code, 1) << o.out;
+  const nlohmann::json listings =
+      nlohmann::json::parse(readText(out / "sweep.json")).at("listings");
+  int timeouts = 0;
+  for (const auto& b : listings.at("breaks")) timeouts += b.at("kind") == "timeout";
+  EXPECT_GT(timeouts, 0) << o.out;
+  fs::remove_all(out);
+}
+
 // A sweep into the folder of an earlier one left that one's charts and
 // data of another backend beside its own results, contradicting them: the
 // sweep's own charts (sweep-*.svg, .png) it did not draw, and its data
