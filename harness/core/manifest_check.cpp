@@ -177,6 +177,11 @@ void checkManifestAgainstProgram(const Manifest& m, const ProgramSource& program
     }
     auto bound = bindings.uniforms.find(b.name);
     if (bound == bindings.uniforms.end()) {
+      if (declared->type.rfind("sampler", 0) != 0 && b.apiDefault)
+        throw UsageError(fmt::format(
+            "{}:{}: `{}` is a {}, which snell cannot set, \"default\" included: it sets float, "
+            "vec2-4, mat3 and mat4 uniforms; declare it as a float in the listing you gate",
+            manifest, b.line, b.name, declared->type));
       if (declared->type.rfind("sampler", 0) != 0)
         throw UsageError(fmt::format("{}:{}: `{}` is a {} but is bound to a texture", manifest,
                                      b.line, b.name, declared->type));

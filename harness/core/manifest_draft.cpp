@@ -160,8 +160,8 @@ std::string uniformHint(const std::string& type) {
         "by column] }}",
         type, type == "mat3" ? 9 : 16);
   return fmt::format(
-      "snell sets float, vec2-4, mat3 and mat4 uniforms; a {} can only be "
-      "\"default\" (0)",
+      "snell sets float, vec2-4, mat3 and mat4 uniforms, not a {}: declare it as a float in "
+      "the listing you gate, or give the case a hand-written oracle",
       type);
 }
 

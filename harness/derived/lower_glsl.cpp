@@ -8,14 +8,17 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <optional>
 #include <regex>
 #include <set>
 
 #include "core/errors.h"
 #include "core/legacy_builtins.h"
+#include "derived/literal_names.h"
 #include "derived/program_builder.h"
 
 namespace snell::derived {
@@ -59,8 +62,12 @@ Key memberKey(const TIntermSymbol& block, int member) {
 
 class Lowering {
  public:
-  Lowering(const ShaderSource& source, TIntermNode* root, LowerOptions options)
-      : source_(source), builder_(source.file, source.text), options_(options) {
+  Lowering(const ShaderSource& source, TIntermNode* root, LowerOptions options,
+           const std::map<std::string, double>& literals)
+      : source_(source),
+        builder_(source.file, source.text),
+        options_(options),
+        literals_(literals) {
     collectFunctions(root);
   }
 
@@ -83,12 +90,17 @@ class Lowering {
     return builder_.finish(std::move(outputs));
   }
 
-  // Keeps the value of each output requested after a line before main()
-  // goes past that line (a statement starting on a later line).
+  // Keeps the value of each output requested after a line as main() goes
+  // past that line: from a statement on that line or before it to one on a
+  // later line. In an unrolled loop that happens on every iteration, and
+  // the last one's value is kept, as the probe writing the capture on
+  // every iteration leaves it.
   void snapshotBefore(int line) {
     if (!inMain_ || !callStack_.empty() || line <= 0) return;
+    const int previous = lastLine_;
+    lastLine_ = line;
     for (const OutputRequest& request : requests_) {
-      if (request.afterLine <= 0 || request.afterLine >= line || snapshots_.count(request.name))
+      if (request.afterLine <= 0 || request.afterLine >= line || request.afterLine < previous)
         continue;
       const auto key = names_.find(request.name);
       if (key == names_.end()) continue;
@@ -98,10 +110,14 @@ class Lowering {
         // A fragment capture the oracle cannot compute (it reads
         // gl_FragCoord, or a ray march's result) is read back and fed in
         // from here on, as the hand-written oracles take such values.
-        Value fed{value->second.shape, {}, {}};
-        fed.regs = builder_.input(request.name, fed.shape.size(), request.afterLine);
-        value->second = fed;
-        fed_.push_back(request.name);
+        auto fed = fedValues_.find(request.name);
+        if (fed == fedValues_.end()) {
+          Value input{value->second.shape, {}, {}};
+          input.regs = builder_.input(request.name, input.shape.size(), request.afterLine);
+          fed = fedValues_.emplace(request.name, input).first;
+          fed_.push_back(request.name);
+        }
+        value->second = fed->second;
         continue;
       }
       snapshots_[request.name] = value->second;
@@ -214,18 +230,21 @@ class Lowering {
                        : op == EOpPostDecrement || op == EOpPreDecrement ? -1
                                                                          : 0;
       if (step != 0) {
-        ints_[intVariable(*unary->getOperand())] += step;
+        long long& variable = ints_[intVariable(*unary->getOperand())];
+        variable = wrapped(static_cast<unsigned long long>(variable + step), unary->getType());
         return;
       }
     }
     if (TIntermBinary* binary = node.getAsBinaryNode()) {
       const TOperator op = binary->getOp();
       if (op == EOpAssign || op == EOpAddAssign || op == EOpSubAssign) {
-        const long long value = compileTimeInt(*binary->getRight());
+        const auto value = static_cast<unsigned long long>(compileTimeInt(*binary->getRight()));
         long long& variable = ints_[intVariable(*binary->getLeft())];
-        variable = op == EOpAssign      ? value
-                   : op == EOpAddAssign ? variable + value
-                                        : variable - value;
+        const auto before = static_cast<unsigned long long>(variable);
+        variable = wrapped(op == EOpAssign      ? value
+                           : op == EOpAddAssign ? before + value
+                                                : before - value,
+                           binary->getLeft()->getType());
         return;
       }
     }
@@ -238,10 +257,22 @@ class Lowering {
     return symbolKey(*symbol);
   }
 
+  // An int or uint result as GLSL has it: the low-order 32 bits of the
+  // exact value ("overflow ... will result in the low-order 32 bits",
+  // GLSL 4.60 section 5.9), signed or not by the node's type.
+  static long long wrapped(unsigned long long exact, const glslang::TType& type) {
+    const auto low = static_cast<std::uint32_t>(exact);
+    if (type.getBasicType() == glslang::EbtUint) return static_cast<long long>(low);
+    return static_cast<long long>(static_cast<std::int32_t>(low));
+  }
+
   long long compileTimeInt(TIntermTyped& node) const {
     using namespace glslang;
-    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion())
-      return constant->getConstArray()[0].getIConst();
+    if (glslang::TIntermConstantUnion* constant = node.getAsConstantUnion()) {
+      const TConstUnion& value = constant->getConstArray()[0];
+      return node.getType().getBasicType() == EbtUint ? static_cast<long long>(value.getUConst())
+                                                      : value.getIConst();
+    }
     if (TIntermSymbol* symbol = node.getAsSymbolNode()) {
       auto found = ints_.find(symbolKey(*symbol));
       if (found == ints_.end())
@@ -250,15 +281,16 @@ class Lowering {
       return found->second;
     }
     if (TIntermBinary* binary = node.getAsBinaryNode()) {
-      const long long a = compileTimeInt(*binary->getLeft());
-      const long long b = compileTimeInt(*binary->getRight());
+      // In unsigned 64-bit arithmetic, which wraps, then to 32 bits.
+      const auto a = static_cast<unsigned long long>(compileTimeInt(*binary->getLeft()));
+      const auto b = static_cast<unsigned long long>(compileTimeInt(*binary->getRight()));
       switch (binary->getOp()) {
         case EOpAdd:
-          return a + b;
+          return wrapped(a + b, node.getType());
         case EOpSub:
-          return a - b;
+          return wrapped(a - b, node.getType());
         case EOpMul:
-          return a * b;
+          return wrapped(a * b, node.getType());
         default:
           break;
       }
@@ -438,7 +470,9 @@ class Lowering {
   Value read(TIntermSymbol& symbol) {
     const Key key = symbolKey(symbol);
     const std::string name = symbol.getName().c_str();
-    noteName(name, key);
+    if (const auto literal = literals_.find(name); literal != literals_.end())
+      return Value{Shape{}, {builder_.literal(literal->second, false)}, {}};
+    noteName(name, key, isPipelineOutput(symbol));
     auto found = variables_.find(key);
     if (found != variables_.end()) return checkedRead(found->second, symbol);
     const int line = symbol.getLoc().line;
@@ -454,6 +488,10 @@ class Lowering {
     if (shape.kind == Kind::Opaque) {
       value.refusal =
           builder_.unsupported(fmt::format("the sampler {} outside texture()", name), line);
+    } else if (storage == glslang::EvqUniform && shape.kind == Kind::Bool) {
+      refuse(symbol, fmt::format("the bool uniform {}: snell sets float, vec2-4, mat3 and mat4 "
+                                 "uniforms only",
+                                 name));
     } else if (storage == glslang::EvqUniform) {
       value.regs = builder_.uniform(name, shape.size(), line, shape.columns);
     } else if (storage == glslang::EvqVaryingIn) {
@@ -491,8 +529,30 @@ class Lowering {
     return value;
   }
 
-  void noteName(const std::string& name, Key key) {
-    if (inMain_ || !inFunction_) names_[name] = key;
+  // Outputs are requested by name. A pipeline output keeps its name: a
+  // local or a struct member of the same name declared later does not
+  // take it over.
+  void noteName(const std::string& name, Key key, bool pipelineOutput) {
+    if (!(inMain_ || !inFunction_)) return;
+    if (pipelineOutput) {
+      outputKeys_.insert(key);
+    } else if (const auto bound = names_.find(name);
+               bound != names_.end() && outputKeys_.count(bound->second)) {
+      return;
+    }
+    names_[name] = key;
+  }
+
+  static bool isPipelineOutput(const TIntermSymbol& symbol) {
+    const glslang::TStorageQualifier storage = symbol.getQualifier().storage;
+    return storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
+           storage == glslang::EvqFragColor;
+  }
+  // A member of an interface block (gl_PerVertex's gl_Position), not of a
+  // struct of the shader's own.
+  static bool isBlockMember(TIntermBinary& node) {
+    const TIntermTyped* base = node.getLeft();
+    return base && base->getType().getBasicType() == glslang::EbtBlock;
   }
 
   Value binaryExpression(TIntermBinary& node, int line) {
@@ -530,7 +590,7 @@ class Lowering {
       }
       case EOpIndexDirectStruct: {
         const auto [key, name] = member(node);
-        noteName(name, key);
+        noteName(name, key, isBlockMember(node));
         auto found = variables_.find(key);
         if (found == variables_.end())
           refuse(node, fmt::format("reading {} before it is assigned", name));
@@ -618,20 +678,19 @@ class Lowering {
     }
     Key key = 0;
     std::string name;
+    bool pipelineOutput = false;
     if (TIntermSymbol* symbol = base->getAsSymbolNode()) {
       key = symbolKey(*symbol);
       name = symbol->getName().c_str();
-      const glslang::TStorageQualifier storage = symbol->getQualifier().storage;
-      if (storage == glslang::EvqVaryingOut || storage == glslang::EvqPosition ||
-          storage == glslang::EvqFragColor)
-        noteOutput(name);
+      pipelineOutput = isPipelineOutput(*symbol);
     } else if (TIntermBinary* binary = base->getAsBinaryNode()) {
       std::tie(key, name) = member(*binary);
-      noteOutput(name);
+      pipelineOutput = isBlockMember(*binary);
     } else {
       refuse(target, "this assignment target");
     }
-    noteName(name, key);
+    if (pipelineOutput) noteOutput(name);
+    noteName(name, key, pipelineOutput);
     auto found = variables_.find(key);
     if (found == variables_.end()) {
       const Shape shape = shapeOf(*base);
@@ -837,9 +896,12 @@ class Lowering {
   const ShaderSource& source_;
   ProgramBuilder builder_;
   LowerOptions options_;
+  const std::map<std::string, double>& literals_;  // withLiteralsNamed's uniforms
   std::vector<OutputRequest> requests_;
   std::map<std::string, Value> snapshots_;
   std::vector<std::string> fed_;  // requests read back and fed in, not computed
+  std::map<std::string, Value> fedValues_;
+  int lastLine_ = 0;  // of the statement snapshotBefore saw last
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;
@@ -847,6 +909,7 @@ class Lowering {
   std::map<Key, int> assignedOneWayOnly_;
   std::map<Key, long long> ints_;  // the compile-time ints (loop counters, their bounds)
   std::map<std::string, Key> names_;
+  std::set<Key> outputKeys_;  // names_'s pipeline outputs
   std::vector<std::string> writtenOutputs_;
   std::vector<TIntermAggregate*> callStack_;
   bool inMain_ = false;
@@ -875,24 +938,50 @@ Program lowerShader(const ShaderSource& source, const std::vector<std::string>& 
   return lowerOutputs(source, requests, options);
 }
 
+namespace {
+
+// glslang's parse of `text`; its log where it does not compile.
+struct Parsed {
+  std::unique_ptr<glslang::TShader> shader;
+  std::string log;
+};
+Parsed parse(const ShaderSource& source, const std::string& text, LowerOptions options) {
+  const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
+  Parsed parsed{std::make_unique<glslang::TShader>(stage), {}};
+  const char* strings = text.c_str();
+  const int length = static_cast<int>(text.size());
+  const char* name = source.file.c_str();
+  parsed.shader->setStringsWithLengthsAndNames(&strings, &length, &name, 1);
+  if (options.vulkanMacros) parsed.shader->setPreamble("#define VULKAN 100\n");
+  if (!parsed.shader->parse(GetDefaultResources(), 110, false, EShMsgDefault)) {
+    parsed.log = parsed.shader->getInfoLog();
+    parsed.log.erase(parsed.log.find_last_not_of(" \t\r\n") + 1);
+    if (parsed.log.empty()) parsed.log = "(glslang gave no reason)";
+  }
+  return parsed;
+}
+
+}  // namespace
+
 Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest>& outputs,
                      LowerOptions options) {
   ensureGlslangInitialised();
   const std::string text = withoutConstQualifiers(source.text);
-  const EShLanguage stage = source.stage == Stage::Vertex ? EShLangVertex : EShLangFragment;
-  glslang::TShader shader(stage);
-  const char* strings = text.c_str();
-  const int length = static_cast<int>(text.size());
-  const char* name = source.file.c_str();
-  shader.setStringsWithLengthsAndNames(&strings, &length, &name, 1);
-  if (options.vulkanMacros) shader.setPreamble("#define VULKAN 100\n");
-  if (!shader.parse(GetDefaultResources(), 110, false, EShMsgDefault)) {
-    std::string log = shader.getInfoLog();
-    log.erase(log.find_last_not_of(" \t\r\n") + 1);
-    throw UsageError(fmt::format(
-        "{}: glslang cannot compile the shader for the derived oracle:\n{}", source.file, log));
+  const NamedLiterals named = withLiteralsNamed(text);
+  Parsed parsed = parse(source, named.text, options);
+  std::map<std::string, double> literals = named.values;
+  if (!parsed.log.empty()) {
+    // A literal where GLSL needs a constant expression: the text as
+    // written, whose literal-only operations glslang folds. Its log is the
+    // one to show, naming the user's own literals.
+    parsed = parse(source, text, options);
+    literals.clear();
+    if (!parsed.log.empty())
+      throw UsageError(
+          fmt::format("{}: glslang cannot compile the shader for the derived oracle:\n{}",
+                      source.file, parsed.log));
   }
-  Lowering lowering(source, shader.getIntermediate()->getTreeRoot(), options);
+  Lowering lowering(source, parsed.shader->getIntermediate()->getTreeRoot(), options, literals);
   return lowering.run(outputs);
 }
 

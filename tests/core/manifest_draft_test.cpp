@@ -309,6 +309,32 @@ TEST_F(ManifestDraft, AnUnfilledPlaceholderIsRefusedWithItsLine) {
   }
 }
 
+// A bool uniform: the draft says snell cannot set one, and "default" for it
+// is refused as that, not as a texture binding.
+TEST_F(ManifestDraft, ABoolUniformIsOneSnellCannotSet) {
+  put("flip.vert", R"(#version 330 core
+in vec3 aPos;
+uniform bool flip;
+out vec3 R;
+void main() {
+  R = flip ? aPos : -aPos;
+  gl_Position = vec4(aPos, 1.0);
+}
+)");
+  const std::string text = draftManifest({dir_, "", "", ""});
+  EXPECT_NE(text.find("not a bool"), std::string::npos) << text;
+  const Manifest m = draftAndLoad("\"default\"");
+  const ResolvedBindings bindings = resolveBindings(m, makeScene(m.cases.at(0).scene));
+  try {
+    checkManifestAgainstProgram(m, loadProgram(m), bindings);
+    FAIL() << "a bool uniform bound to \"default\" was taken";
+  } catch (const UsageError& error) {
+    EXPECT_NE(std::string(error.what()).find("`flip` is a bool, which snell cannot set"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
 TEST_F(ManifestDraft, TheCitationPlaceholderIsRefusedToo) {
   put("refraction.vert", kLearnOpenGlVertex);
   writeDraftManifest({dir_, "", "", ""}, false);

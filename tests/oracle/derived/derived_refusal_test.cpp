@@ -135,6 +135,20 @@ TEST(DerivedRefusal, ASyntaxErrorIsReportedWithGlslangsMessage) {
   EXPECT_TRUE(mentions(message, "user.vert: glslang cannot compile")) << message;
 }
 
+// A bool uniform, which snell cannot set: refused where it is read (the
+// program had a register without values for it, and crashed evaluating).
+TEST(DerivedRefusal, ABoolUniformIsRefusedWithItsLine) {
+  const std::string message = refusalOf(R"(#version 330 core
+uniform bool flip;
+out float t;
+void main() {
+  t = 1.0;
+  if (flip) t = 2.0;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:6: the bool uniform flip")) << message;
+}
+
 // Swizzles and constructors cost no operation: they only pick registers.
 TEST(DerivedLowering, SwizzlesAndConstructorsEmitNoOperations) {
   const derived::Program program = derived::lowerShader({"user.vert", R"(#version 140

@@ -1,0 +1,100 @@
+// Which value the derived oracle computes for a requested name: outputs
+// that share their name with a local or a struct member, 32-bit ints, and
+// a capture on a line that a loop runs several times.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "derived/evaluate.h"
+#include "derived/lower_glsl.h"
+#include "oracle/interval.h"
+
+namespace snell::test {
+namespace {
+
+std::vector<double> exactOutputs(const std::string& text, const std::vector<std::string>& names,
+                                 derived::Stage stage = derived::Stage::Vertex) {
+  const derived::Program program = derived::lowerShader({"user.vert", text, stage}, names);
+  std::vector<double> values;
+  for (const auto& output : derived::evaluateProgram<double>(program, {}, {}, 1))
+    values.insert(values.end(), output.begin(), output.end());
+  return values;
+}
+
+TEST(DerivedNames, AnOutputIsNotTakenOverByALocalOfItsName) {
+  const std::vector<double> R = exactOutputs(R"(#version 330 core
+out float R;
+void main() {
+  R = 1.5;
+  {
+    float R = 3.0;
+    gl_Position = vec4(R);
+  }
+}
+)",
+                                             {"R"});
+  EXPECT_EQ(R, std::vector<double>{1.5});
+}
+
+TEST(DerivedNames, AnOutputIsNotTakenOverByAStructMemberOfItsName) {
+  const std::vector<double> R = exactOutputs(R"(#version 330 core
+out float R;
+struct Ray { float R; };
+void main() {
+  R = 1.5;
+  Ray ray;
+  ray.R = 3.0;
+  gl_Position = vec4(ray.R);
+}
+)",
+                                             {"R"});
+  EXPECT_EQ(R, std::vector<double>{1.5});
+}
+
+TEST(DerivedNames, IntsWrapToTheirLow32Bits) {
+  const std::vector<double> values = exactOutputs(R"(#version 330 core
+out float big;
+out float u;
+out float down;
+void main() {
+  int n = 65536;
+  big = float(n * n);
+  uint v = 0u;
+  v -= 1u;
+  u = float(v);
+  int m = -2147483647;
+  m--;
+  m--;
+  down = float(m);
+}
+)",
+                                                  {"big", "u", "down"});
+  // 2^32 wraps to 0; 0u - 1u is 4294967295u, and INT_MIN - 1 is INT_MAX (each
+  // then the nearest float).
+  EXPECT_EQ(values, (std::vector<double>{0.0, 4294967296.0, 2147483648.0}));
+}
+
+TEST(DerivedNames, ACaptureInsideALoopKeepsTheLastIterationsValue) {
+  const std::string text = R"(#version 330 core
+out vec4 FragColor;
+void main()
+{
+    float R = 1.0;
+    for (int k = 0; k < 3; k++) {
+        R = R + 1.0;
+        R = R * 2.0;
+    }
+    FragColor = vec4(R);
+}
+)";
+  // After line 7 on each iteration: 2, then 4 + 1, then 10 + 1.
+  const derived::Program program =
+      derived::lowerOutputs({"user.frag", text, derived::Stage::Fragment}, {{"R", 7}});
+  const auto values = derived::evaluateProgram<double>(program, {}, {}, 1);
+  ASSERT_EQ(values.size(), 1u);
+  EXPECT_EQ(values[0], std::vector<double>{11.0});
+}
+
+}  // namespace
+}  // namespace snell::test
