@@ -4,9 +4,8 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <system_error>
 
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "runner/interrupt_flag.h"
 #include "sweep/sweep_backend_run.h"
@@ -28,15 +27,15 @@ namespace {
 
 // Between the sweep's phases: a Ctrl-C stops the drivers' children at once
 // (sweep_backend_run.cpp, listing_capture.cpp) and the sweep here.
-void stopIfInterrupted(const std::filesystem::path& input) {
+void stopIfInterrupted() {
   const int signal = interruptReceived();
   if (signal == 0) return;
-  std::error_code ignored;
-  std::filesystem::remove(input, ignored);
-  throw Interrupted(signal, fmt::format("sweep interrupted by {}: sweep.json and the charts are "
-                                        "written when the sweep ends, so none was written, and "
-                                        "its input and temporary files are removed",
-                                        signalName(signal)));
+  throw Interrupted(signal,
+                    fmt::format("sweep interrupted by {}: sweep.json and the charts are written "
+                                "when the sweep ends, so none was written, nor its input (an "
+                                "earlier sweep's files in --out are as they were), and its "
+                                "temporary files are removed",
+                                signalName(signal)));
 }
 
 }  // namespace
@@ -55,18 +54,12 @@ SweepResult runSweep(const SweepOptions& options) {
   result.points = options.builtins ? sweepPoints(result.grid) : std::vector<SweepPoint>{};
   result.sweeps.push_back(sweepOracle(result.points));
   std::filesystem::create_directories(options.outDir);
-  const std::filesystem::path input = options.outDir / kInputFile;
-  {
-    std::ofstream file(input);
-    file << evalInput(result.points);
-    if (!file) throw SetupError(input.string() + ": cannot write the sweep's input; check --out");
-  }
   for (const std::string& backend : options.backends) {
     result.sweeps.push_back(
         options.builtins ? sweepDriver(options.executable, backend, result.points, options.outDir,
                                        options.timeoutSeconds, 40, options.driverArgs)
                          : BackendSweep{backend, "", {}});
-    stopIfInterrupted(input);
+    stopIfInterrupted();
   }
   classifyAll(result);
   if (!options.listings.empty()) {
@@ -81,9 +74,13 @@ SweepResult runSweep(const SweepOptions& options) {
     listing.quick = options.quick;
     listing.timeoutSeconds = options.timeoutSeconds;  // --timeout cuts each draw too
     result.listings = runListingSweep(listing);
-    stopIfInterrupted(input);
+    stopIfInterrupted();
     result.listingsSwept = true;
   }
+  // The input goes with the sweep.json and charts written after it: put
+  // in place whole once the sweep is done, so that a sweep stopped before
+  // leaves an earlier one's input beside that one's results.
+  writeFileAtomically(options.outDir / kInputFile, evalInput(result.points));
   result.wallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

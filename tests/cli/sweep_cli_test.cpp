@@ -406,5 +406,31 @@ TEST(SweepCli, InterruptedSweepAndBenchSayWhatBecameOfTheirWork) {
   fs::remove_all(dir);
 }
 
+// Ctrl-C on a sweep into the folder of an earlier one removed that one's
+// sweep-input.jsonl, which its sweep.json and charts go with: the input is
+// put in place only when the sweep ends, and the earlier files stay as
+// they were.
+TEST(SweepCli, AnInterruptedSweepLeavesTheEarlierOnesInput) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell-sweep-intin-{}", ::getpid());
+  fs::remove_all(out);
+  fs::create_directories(out);
+  std::ofstream(out / "sweep-input.jsonl") << "earlier input";
+  std::ofstream(out / "sweep.json") << "earlier results";
+  const fs::path err = out.string() + ".err";
+  const pid_t pid = spawnSnell({"sweep", "--backend", "vk", "--out", out.string()}, err.string());
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGINT) << readText(err);
+  EXPECT_EQ(readText(out / "sweep-input.jsonl"), "earlier input") << readText(err);
+  EXPECT_EQ(readText(out / "sweep.json"), "earlier results");
+  std::set<std::string> left;
+  for (const auto& entry : fs::directory_iterator(out)) left.insert(entry.path().filename());
+  EXPECT_EQ(left, (std::set<std::string>{"sweep-input.jsonl", "sweep.json"}));
+  fs::remove_all(out);
+  fs::remove(err);
+}
+
 }  // namespace
 }  // namespace snell::testing
