@@ -149,8 +149,9 @@ BenchResults runBench(const BenchOptions& options,
         throw Interrupted(
             signal,
             fmt::format("bench interrupted by {} after {} of {} methods of {} were measured: "
-                        "bench.json, the table and the charts are written when a ladder ends, "
-                        "so none was written for it (ladders finished before it are kept)",
+                        "bench.json, the table, the charts and the images are written when a "
+                        "ladder ends, so none was written for it (an earlier run's stay as they "
+                        "were; ladders finished before it are kept)",
                         signalName(signal), results.records.size(), total,
                         options.methodsDir.string()));
       BenchRecord record;

@@ -22,6 +22,7 @@
 #include "cli/commands.h"
 #include "cli/option_checks.h"
 #include "cli/output_paths.h"
+#include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/message.h"
 #include "runner/interrupt_flag.h"
@@ -85,15 +86,53 @@ void removeEarlierOutputs(const bench::BenchResults& results, const std::filesys
   for (const fs::path& path : stale) fs::remove(path, error);
 }
 
+// A ladder's new images, written to a folder beside images/ and moved into
+// it once bench.json is written: a bench stopped before then (Ctrl-C, a
+// method that fails) leaves the earlier run's images with the earlier
+// bench.json they go with. The folder goes when this does.
+class StagedImages {
+ public:
+  explicit StagedImages(const std::filesystem::path& out)
+      : images_(out / "images"), staging_(temporaryPathFor(images_)) {
+    std::filesystem::create_directories(images_);
+    std::filesystem::create_directories(staging_);
+  }
+  ~StagedImages() {
+    std::error_code ignored;
+    std::filesystem::remove_all(staging_, ignored);
+  }
+  StagedImages(const StagedImages&) = delete;
+  StagedImages& operator=(const StagedImages&) = delete;
+
+  const std::filesystem::path& folder() const { return staging_; }
+
+  // Moves each image into images/, over the earlier run's of its name.
+  void moveIntoPlace() const {
+    for (const std::filesystem::directory_entry& entry :
+         std::filesystem::directory_iterator(staging_)) {
+      const std::filesystem::path target = images_ / entry.path().filename();
+      std::error_code error;
+      std::filesystem::rename(entry.path(), target, error);
+      if (error)
+        throw SetupError(fmt::format("{}: cannot move the new image there ({}); check --out",
+                                     target.string(), error.message()));
+    }
+  }
+
+ private:
+  std::filesystem::path images_, staging_;
+};
+
 // Measures one ladder into `out`: bench.json, its table, its charts; returns
 // the line naming what it wrote.
 std::string measureLadder(bench::BenchOptions run, const std::filesystem::path& out,
                           const std::string& metric) {
-  std::filesystem::create_directories(out / "images");
-  run.imagesDir = out / "images";
+  const StagedImages images(out);
+  run.imagesDir = images.folder();
   const bench::BenchResults results =
       bench::runBench(run, [](const std::string& line) { printMessage(stderr, "{}\n", line); });
   bench::writeBenchResults(results, out / "bench.json");
+  images.moveIntoPlace();
   fmt::print("{}", bench::benchTable(results, metric));
   removeEarlierOutputs(results, out);
   bench::drawParetoChart(results, metric, out);

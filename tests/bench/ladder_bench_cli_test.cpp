@@ -2,11 +2,16 @@
 // it, on a tiny image: a record per method and backend, the charts, and the
 // order physics gives. Timing is never asserted.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "../cli/snell_process.h"
 #include "bench/bench_record.h"
@@ -238,6 +243,47 @@ TEST(LadderBenchCli, AnEarlierBenchsOutputsDoNotStayBesideANewOnesResults) {
   EXPECT_TRUE(fs::exists(out / "measurements.dat"));
   EXPECT_TRUE(fs::exists(out / "images" / "photo.exr"));
   fs::remove_all(out);
+}
+
+// Ctrl-C on a bench into the folder of an earlier one wrote the images of
+// the methods it had measured over that one's, beside the earlier
+// bench.json they no longer matched (and said none was written): the new
+// images go into images/ only with the new bench.json.
+TEST(LadderBenchCli, AnInterruptedBenchLeavesTheEarlierOnesImages) {
+  const fs::path out = fs::temp_directory_path() / fmt::format("snell_bench_int.{}", getpid());
+  fs::remove_all(out);
+  const std::string methods = std::string(SNELL_SOURCE_ROOT) + "/shaders/methods/fresnel";
+  ASSERT_EQ(runSnell(fmt::format("bench --methods {} --backends gl --resolutions 16 "
+                                 "--tessellations 6 --repeats 1 --warmup 0 --no-ablation --out {}",
+                                 methods, out.string()))
+                .code,
+            0);
+  const auto contents = [&] {
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(out))
+      files[fs::relative(entry.path(), out).string()] =
+          entry.is_regular_file() ? readText(entry.path()) : "(folder)";
+    return files;
+  };
+  const std::map<std::string, std::string> before = contents();
+  ASSERT_TRUE(before.count("images/physics_reference.exr"));
+  const fs::path err = out.string() + ".err";
+  const pid_t pid = spawnSnell({"bench", "--methods", methods, "--backends", "gl", "--resolutions",
+                                "32,128", "--tessellations", "6", "--repeats", "50", "--warmup",
+                                "0", "--no-ablation", "--out", out.string()},
+                               err.string());
+  // A method's line comes once it is measured (and its image written).
+  for (int k = 0; k < 6000 && readText(err).find(" ms per frame at ") == std::string::npos; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  const std::string said = readText(err);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGINT) << said;
+  EXPECT_NE(said.find("bench interrupted by SIGINT after "), std::string::npos) << said;
+  EXPECT_TRUE(contents() == before) << "the earlier run's files changed; " << said;
+  fs::remove_all(out);
+  fs::remove(err);
 }
 
 }  // namespace snell::testing
