@@ -731,8 +731,9 @@ class Lowering {
           line);
       return value;
     }
-    return builder_.unary(node.getOp(), operand, shapeOf(node), line,
-                          [&](const std::string& what) { refuse(node, what); });
+    return builder_.unary(
+        node.getOp(), operand, shapeOf(node), line,
+        [&](const std::string& what) { refuse(node, what); }, calledName(node));
   }
 
   // transpose(m): the same registers in the other order; exact.
@@ -795,7 +796,44 @@ class Lowering {
                              refuseHere);
     }
     if (node.isConstructor()) return builder_.construct(shapeOf(node), args, line, refuseHere);
-    return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere);
+    return builder_.builtin(node.getOp(), args, shapeOf(node), line, refuseHere, calledName(node));
+  }
+
+  // The name of the function a call node calls, read from the source at
+  // the node's location (glslang keeps no name for a built-in's call): the
+  // location is the call's closing parenthesis, or inside its argument
+  // list (a one-argument call takes its argument's). Empty where the text
+  // there is not such a call.
+  std::string calledName(const TIntermNode& node) const {
+    const glslang::TSourceLoc& loc = node.getLoc();
+    std::size_t start = 0;
+    for (int line = 1; line < loc.line; ++line) {
+      start = source_.text.find('\n', start);
+      if (start == std::string::npos) return {};
+      ++start;
+    }
+    const std::size_t end = std::min(source_.text.find('\n', start), source_.text.size());
+    const std::string text = source_.text.substr(start, end - start);
+    if (loc.column <= 0 || static_cast<std::size_t>(loc.column) > text.size()) return {};
+    // Leftwards to the unmatched '(' that opens the argument list.
+    const std::size_t at = static_cast<std::size_t>(loc.column - 1);
+    std::size_t open = text[at] == ')' ? at : at + 1;
+    int depth = text[at] == ')' ? 1 : 0;
+    while (open > 0) {
+      const char c = text[--open];
+      if (c == ')') ++depth;
+      if (c == '(' && depth-- == 0) break;
+      if (c == '(' && depth == 0 && text[at] == ')') break;
+    }
+    if (text[open] != '(') return {};
+    const auto identifierByte = [](char c) {
+      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    };
+    std::size_t last = open;
+    while (last > 0 && text[last - 1] == ' ') --last;
+    std::size_t first = last;
+    while (first > 0 && identifierByte(text[first - 1])) --first;
+    return first < last ? text.substr(first, last - first) : std::string{};
   }
 
   // `f(` of glslang's mangled `f(f1;`.

@@ -201,7 +201,7 @@ Value ProgramBuilder::binary(glslang::TOperator op, const Value& left, const Val
 }
 
 Value ProgramBuilder::unary(glslang::TOperator op, const Value& operand, Shape result, int line,
-                            const Refuse& refuse) {
+                            const Refuse& refuse, const std::string& called) {
   using namespace glslang;
   if (!operand.refusal.empty()) return Value{result, {}, operand.refusal};
   if (op == EOpConvBoolToFloat) return Value{result, toFloat(operand, line), {}};
@@ -227,7 +227,8 @@ Value ProgramBuilder::unary(glslang::TOperator op, const Value& operand, Shape r
     case EOpAbs:
       return componentwise(OpCode::Abs, {operand}, result, line);
     default:
-      return Value{result, {}, unsupported("this operation", line)};
+      return Value{
+          result, {}, unsupported(called.empty() ? "this operation" : called + "()", line)};
   }
 }
 
@@ -269,7 +270,7 @@ Value ProgramBuilder::construct(Shape result, const std::vector<Value>& args, in
 }
 
 Value ProgramBuilder::builtin(glslang::TOperator op, const std::vector<Value>& args, Shape result,
-                              int line, const Refuse& refuse) {
+                              int line, const Refuse& refuse, const std::string& called) {
   using namespace glslang;
   if (std::string refusal = refusalOf(args); !refusal.empty()) return Value{result, {}, refusal};
   for (const Value& arg : args)
@@ -318,7 +319,8 @@ Value ProgramBuilder::builtin(glslang::TOperator op, const std::vector<Value>& a
     case EOpClamp:
       return componentwise(OpCode::Clamp, args, result, line);
     default:
-      return Value{result, {}, unsupported("this built-in function", line)};
+      return Value{
+          result, {}, unsupported(called.empty() ? "this built-in function" : called + "()", line)};
   }
 }
 

@@ -56,11 +56,13 @@ class ProgramBuilder {
 
   Value binary(glslang::TOperator op, const Value& left, const Value& right, Shape result, int line,
                const Refuse& refuse);
+  // `called`: the function's name as the source spells it, for the message
+  // when it is outside the subset (empty where it is an operator).
   Value unary(glslang::TOperator op, const Value& operand, Shape result, int line,
-              const Refuse& refuse);
+              const Refuse& refuse, const std::string& called = {});
   Value construct(Shape result, const std::vector<Value>& args, int line, const Refuse& refuse);
   Value builtin(glslang::TOperator op, const std::vector<Value>& args, Shape result, int line,
-                const Refuse& refuse);
+                const Refuse& refuse, const std::string& called = {});
 
   // texture(sampler, coordinates) on a samplerCube (`cube`) or a sampler2D,
   // and inverse(m): double-only operations (ir.h) for the reference image.

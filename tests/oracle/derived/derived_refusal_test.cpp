@@ -135,6 +135,18 @@ TEST(DerivedRefusal, ASyntaxErrorIsReportedWithGlslangsMessage) {
   EXPECT_TRUE(mentions(message, "user.vert: glslang cannot compile")) << message;
 }
 
+// An unsupported built-in is named, so that a line calling two says which.
+TEST(DerivedRefusal, AnUnsupportedBuiltInIsNamed) {
+  const std::string message = refusalOf(R"(#version 330 core
+uniform float a;
+out float t;
+void main() {
+  t = dot(vec2(a), vec2(a)) + floor(a);
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:5: floor()")) << message;
+}
+
 // A bool uniform, which snell cannot set: refused where it is read (the
 // program had a register without values for it, and crashed evaluating).
 TEST(DerivedRefusal, ABoolUniformIsRefusedWithItsLine) {
