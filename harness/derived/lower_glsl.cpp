@@ -826,6 +826,10 @@ class Lowering {
       if (c == '(' && depth == 0 && text[at] == ')') break;
     }
     if (text[open] != '(') return {};
+    // A one-argument call's location is its argument's: only where that is
+    // the first thing in the parentheses is the call known to be this node
+    // (`vec3(x++)` is not a call of vec3 by the ++).
+    if (text[at] != ')' && text.find_first_not_of(" \t", open + 1) != at) return {};
     const auto identifierByte = [](char c) {
       return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     };
