@@ -4,6 +4,7 @@
 // finished, so the caller can still write the results and a summary.
 // A second signal is the user's "now": the process says so on stderr and
 // exits at once with 128 + the signal, without finishing what it writes.
+#include <chrono>
 #include <csignal>
 #include <string>
 
@@ -35,6 +36,10 @@ int interruptReceived();
 
 // "SIGINT", "SIGTERM", ...: a signal as messages name it.
 std::string signalName(int signal);
+
+// A signal within this time of the first is the same interrupt, not a
+// second one (interrupt_flag.cpp says why).
+inline constexpr std::chrono::milliseconds kSameInterrupt{250};
 
 // The line stderr gets on the second signal (for the tests).
 inline constexpr char kStoppedAtOnceMessage[] =
