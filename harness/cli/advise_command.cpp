@@ -59,6 +59,7 @@ Command addAdviseCommand(CLI::App& app) {
       ->required();
   advise
       ->add_option("--budget", options->budget, "The largest error allowed, in the metric's units")
+      ->check(number("the largest error allowed, in the metric's units (e.g. 1.0 for de_mean)"))
       ->required();
   advise->add_option("--metric", options->metric, "rms, max, de_mean (default) or de_p95");
   CLI::Option* ladder = advise->add_option(

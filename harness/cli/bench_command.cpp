@@ -200,6 +200,7 @@ Command addBenchCommand(CLI::App& app) {
       ->add_option("--resolutions", options->run.resolutions,
                    "Square image sizes in pixels; the error is measured at the last")
       ->delimiter(',')
+      ->check(nonEmpty("list of sizes", "give sizes in pixels, e.g. 128,256,512"))
       ->capture_default_str();
   bench
       ->add_option("--tessellations", options->run.tessellations,
@@ -207,7 +208,8 @@ Command addBenchCommand(CLI::App& app) {
                    "in the scene's ratio, 2 per stack on `sphere`): how the time grows with the "
                    "vertex count (default: the scene's own, a quarter and four times it; the "
                    "error is measured at the scene's own)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->check(nonEmpty("list of stacks", "give stacks, e.g. 12,48,192"));
   // Ranges stated here: past int, CLI11 says only "Could not convert".
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution")
       ->check(wholeNumber())

@@ -33,6 +33,19 @@ inline CLI::Validator nonEmptyGlob() {
   return nonEmpty("glob", "give one ('*' matches every case)");
 }
 
+// A floating-point value: CLI11 takes an empty one as 0 and says only
+// "Could not convert" of one that is not a number. `what` says what to give.
+inline CLI::Validator number(const std::string& what) {
+  return CLI::Validator(
+      [what](const std::string& text) -> std::string {
+        if (text.empty()) return "empty; give " + what;
+        char* end = nullptr;
+        std::strtod(text.c_str(), &end);
+        return *end == '\0' ? "" : "`" + text + "` is not a number; give " + what;
+      },
+      "");
+}
+
 // A count of whole units (seconds, repeats): CLI11 turns "1.5" for an
 // unsigned option into "Value 1.5 not in range", which hides the reason.
 inline CLI::Validator wholeNumber() {

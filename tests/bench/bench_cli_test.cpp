@@ -202,5 +202,30 @@ TEST(BenchCliInput, BadInputIsOneMessageAndExitTwo) {
   std::filesystem::remove_all(badOut);
 }
 
+// --budget '' was taken as 0 (exit 1, "no method within de_mean 0") and
+// --budget abc met a bare "Could not convert"; --resolutions '' and
+// --tessellations '' were said to hold 0, out of range. Each is exit 2,
+// naming the option and what it takes.
+TEST(BenchCliInput, AnEmptyOrNonNumericValueNamesItsOption) {
+  const std::string badOut = fmt::format("/tmp/snell_bench_empty.{}", getpid());
+  const std::string results = "--results /nonexistent/bench.json";
+  Outcome o = runSnell("advise --scene sphere --budget '' " + results);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--budget: empty; give the largest error allowed"), std::string::npos)
+      << o.out;
+  o = runSnell("advise --scene sphere --budget abc " + results);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--budget: `abc` is not a number; give the largest error allowed"),
+            std::string::npos)
+      << o.out;
+  o = runSnell("bench --resolutions '' --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--resolutions: an empty list of sizes"), std::string::npos) << o.out;
+  o = runSnell("bench --tessellations '' --out " + badOut);
+  EXPECT_EQ(o.code, 2) << o.out;
+  EXPECT_NE(o.out.find("--tessellations: an empty list of stacks"), std::string::npos) << o.out;
+  EXPECT_FALSE(std::filesystem::exists(badOut));
+}
+
 }  // namespace
 }  // namespace snell::testing
