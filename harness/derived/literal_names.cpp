@@ -64,8 +64,12 @@ NamedLiterals withLiteralsNamed(const std::string& text) {
   bool lineStart = true;
   Directive directive = Directive::None;
   std::size_t i = 0;
+  // #if / #ifdef / #ifndef blocks open around the text: the declarations
+  // go before the first token outside all of them, never into a branch the
+  // preprocessor may drop.
+  int conditionals = 0;
   const auto firstToken = [&] {
-    if (declarationsAt == std::string::npos && directive == Directive::None)
+    if (declarationsAt == std::string::npos && directive == Directive::None && conditionals == 0)
       declarationsAt = out.size();
   };
   while (i < text.size()) {
@@ -104,8 +108,10 @@ NamedLiterals withLiteralsNamed(const std::string& text) {
       while (at < text.size() && (text[at] == ' ' || text[at] == '\t')) ++at;
       std::size_t nameEnd = at;
       while (nameEnd < text.size() && identifierByte(text[nameEnd])) ++nameEnd;
-      directive =
-          text.compare(at, nameEnd - at, "define") == 0 ? Directive::Define : Directive::Other;
+      const std::string name = text.substr(at, nameEnd - at);
+      directive = name == "define" ? Directive::Define : Directive::Other;
+      if (name == "if" || name == "ifdef" || name == "ifndef") ++conditionals;
+      if (name == "endif" && conditionals > 0) --conditionals;
       out.append(text, i, nameEnd - i);
       i = nameEnd;
       lineStart = false;

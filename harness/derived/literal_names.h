@@ -11,7 +11,9 @@
 // run-time values, as for a hand-written oracle.
 //
 // Lines stay where they are (the declarations go on the line of the first
-// token, before it), so messages keep the listing's line numbers.
+// token outside any #if block, before it), so messages keep the listing's
+// line numbers. Where the renamed text does not compile (a literal used
+// before that token), the lowering parses the text as written instead.
 #include <map>
 #include <string>
 

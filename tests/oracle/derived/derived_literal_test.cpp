@@ -79,6 +79,22 @@ void main() {
   EXPECT_EQ(named.text.find("2.5"), std::string::npos);
 }
 
+TEST(DerivedLiteral, TheDeclarationsGoOutsideAnyConditionalBlock) {
+  const std::string text = R"(#version 330 core
+#ifdef GL_ES
+precision highp float;
+#endif
+out float t;
+void main() { t = 2.0 * 0.5; }
+)";
+  const derived::NamedLiterals named = derived::withLiteralsNamed(text);
+  EXPECT_NE(named.text.find("precision highp float;\n#endif\nuniform float "), std::string::npos)
+      << named.text;
+  const std::vector<Interval> allowed = allowedOutputs(text);
+  ASSERT_EQ(allowed.size(), 1u);
+  EXPECT_TRUE(contains(allowed[0], 1.0f));
+}
+
 TEST(DerivedLiteral, GlslEsGlobalsKeepTheirConstantInitializers) {
   // GLSL ES allows only constant initializers for globals.
   const std::string text = R"(#version 300 es
