@@ -62,9 +62,11 @@ Key memberKey(const TIntermSymbol& block, int member) {
 
 class Lowering {
  public:
-  Lowering(const ShaderSource& source, TIntermNode* root, LowerOptions options,
-           const std::map<std::string, double>& literals)
+  // `parsedText`: the text glslang parsed, whose columns its locations give.
+  Lowering(const ShaderSource& source, const std::string& parsedText, TIntermNode* root,
+           LowerOptions options, const std::map<std::string, double>& literals)
       : source_(source),
+        parsedText_(parsedText),
         builder_(source.file, source.text),
         options_(options),
         literals_(literals) {
@@ -107,6 +109,14 @@ class Lowering {
       const auto value = variables_.find(key->second);
       if (value == variables_.end()) continue;
       if (!value->second.refusal.empty() && source_.stage == Stage::Fragment) {
+        if (loops_ > 0)
+          throw UsageError(
+              builder_.unsupported(fmt::format("a capture of {} after line {}, inside a loop, that "
+                                               "the oracle cannot compute",
+                                               request.name, request.afterLine),
+                                   request.afterLine) +
+              "; the value read back is the last iteration's, and each iteration "
+              "would need its own; capture it after the loop");
         // A fragment capture the oracle cannot compute (it reads
         // gl_FragCoord, or a ray march's result) is read back and fed in
         // from here on, as the hand-written oracles take such values.
@@ -216,6 +226,7 @@ class Lowering {
       if (!compileTimeBool(*loop.getTest())) return;
       if (iteration == kMaxIterations)
         refuse(loop, fmt::format("a loop of more than {} iterations", kMaxIterations));
+      const NestingGuard inLoop(loops_);
       statement(loop.getBody());
       intStatement(*loop.getTerminal());
     }
@@ -325,15 +336,28 @@ class Lowering {
 
   // Both ways are lowered from the same state; each variable either way
   // changed becomes a choice between its two values (ProgramBuilder::select).
+  // The line of a block's first statement.
+  static int firstLine(TIntermNode& block) {
+    TIntermAggregate* sequence = block.getAsAggregate();
+    if (sequence && sequence->getOp() == glslang::EOpSequence && !sequence->getSequence().empty())
+      return firstLine(*sequence->getSequence().front());
+    return block.getLoc().line;
+  }
+
   void ifElse(glslang::TIntermSelection& node) {
     const Value condition = this->condition(*node.getCondition());
     const std::map<Key, Value> before = variables_;
     const std::map<Key, long long> intsBefore = ints_;
+    std::map<Key, Value> afterThen, afterElse;
     statement(node.getTrueBlock());
-    std::map<Key, Value> afterThen = std::move(variables_);
+    // A capture on the then way's last line is taken with the then way's
+    // values, before they are set aside for the else way: its first
+    // statement is where main goes past that line.
+    if (node.getFalseBlock()) snapshotBefore(firstLine(*node.getFalseBlock()));
+    afterThen = std::move(variables_);
     variables_ = before;
     statement(node.getFalseBlock());
-    std::map<Key, Value> afterElse = std::move(variables_);
+    afterElse = std::move(variables_);
     variables_ = before;
     if (ints_ != intsBefore) refuse(node, "an int assigned under a condition");
     const auto same = [](const Value& a, const Value& b) {
@@ -489,9 +513,10 @@ class Lowering {
       value.refusal =
           builder_.unsupported(fmt::format("the sampler {} outside texture()", name), line);
     } else if (storage == glslang::EvqUniform && shape.kind == Kind::Bool) {
-      refuse(symbol, fmt::format("the bool uniform {}: snell sets float, vec2-4, mat3 and mat4 "
-                                 "uniforms only",
-                                 name));
+      value.refusal = builder_.unsupported(
+          fmt::format("the bool uniform {} (snell sets float, vec2-4, mat3 and mat4 uniforms only)",
+                      name),
+          line);
     } else if (storage == glslang::EvqUniform) {
       value.regs = builder_.uniform(name, shape.size(), line, shape.columns);
     } else if (storage == glslang::EvqVaryingIn) {
@@ -808,12 +833,12 @@ class Lowering {
     const glslang::TSourceLoc& loc = node.getLoc();
     std::size_t start = 0;
     for (int line = 1; line < loc.line; ++line) {
-      start = source_.text.find('\n', start);
+      start = parsedText_.find('\n', start);
       if (start == std::string::npos) return {};
       ++start;
     }
-    const std::size_t end = std::min(source_.text.find('\n', start), source_.text.size());
-    const std::string text = source_.text.substr(start, end - start);
+    const std::size_t end = std::min(parsedText_.find('\n', start), parsedText_.size());
+    const std::string text = parsedText_.substr(start, end - start);
     if (loc.column <= 0 || static_cast<std::size_t>(loc.column) > text.size()) return {};
     // Leftwards to the unmatched '(' that opens the argument list.
     const std::size_t at = static_cast<std::size_t>(loc.column - 1);
@@ -936,6 +961,7 @@ class Lowering {
   }
 
   const ShaderSource& source_;
+  const std::string& parsedText_;
   ProgramBuilder builder_;
   LowerOptions options_;
   const std::map<std::string, double>& literals_;  // withLiteralsNamed's uniforms
@@ -944,6 +970,7 @@ class Lowering {
   std::vector<std::string> fed_;  // requests read back and fed in, not computed
   std::map<std::string, Value> fedValues_;
   int lastLine_ = 0;  // of the statement snapshotBefore saw last
+  int loops_ = 0;     // loop bodies being lowered
   std::map<std::string, TIntermAggregate*> functions_;
   std::vector<TIntermNode*> globals_;
   std::map<Key, Value> variables_;
@@ -1010,20 +1037,27 @@ Program lowerOutputs(const ShaderSource& source, const std::vector<OutputRequest
   ensureGlslangInitialised();
   const std::string text = withoutConstQualifiers(source.text);
   const NamedLiterals named = withLiteralsNamed(text);
-  Parsed parsed = parse(source, named.text, options);
-  std::map<std::string, double> literals = named.values;
-  if (!parsed.log.empty()) {
-    // A literal where GLSL needs a constant expression: the text as
-    // written, whose literal-only operations glslang folds. Its log is the
-    // one to show, naming the user's own literals.
-    parsed = parse(source, text, options);
-    literals.clear();
-    if (!parsed.log.empty())
-      throw UsageError(
-          fmt::format("{}: glslang cannot compile the shader for the derived oracle:\n{}",
-                      source.file, parsed.log));
+  if (!named.values.empty()) {
+    // Where the named text does not compile (a literal where GLSL needs a
+    // constant expression) or is refused (an operation outside the subset
+    // on literals alone, acos(-1.0), int(4.0), which glslang folds from
+    // the text as written), the text as written is lowered instead.
+    const Parsed parsed = parse(source, named.text, options);
+    if (parsed.log.empty()) {
+      try {
+        Lowering lowering(source, named.text, parsed.shader->getIntermediate()->getTreeRoot(),
+                          options, named.values);
+        return lowering.run(outputs);
+      } catch (const UsageError&) {
+      }
+    }
   }
-  Lowering lowering(source, parsed.shader->getIntermediate()->getTreeRoot(), options, literals);
+  const Parsed parsed = parse(source, text, options);
+  if (!parsed.log.empty())
+    throw UsageError(
+        fmt::format("{}: glslang cannot compile the shader for the derived oracle:\n{}",
+                    source.file, parsed.log));
+  Lowering lowering(source, text, parsed.shader->getIntermediate()->getTreeRoot(), options, {});
   return lowering.run(outputs);
 }
 

@@ -95,6 +95,21 @@ void main() { t = 2.0 * 0.5; }
   EXPECT_TRUE(contains(allowed[0], 1.0f));
 }
 
+// An operation outside the subset on literals alone, or a literal where an
+// int must be known: the text as written, as glslang folds it, as before
+// literals were named.
+TEST(DerivedLiteral, WhatTheNamedTextCannotLowerIsLoweredAsWritten) {
+  const std::vector<Interval> allowed = allowedOutputs(R"(#version 330 core
+out float t;
+void main() {
+  t = 0.0;
+  for (int i = 0; i < int(4.0); ++i) t = t + acos(-1.0);
+}
+)");
+  ASSERT_EQ(allowed.size(), 1u);
+  EXPECT_TRUE(contains(allowed[0], 4.0f * 3.14159274f));
+}
+
 TEST(DerivedLiteral, GlslEsGlobalsKeepTheirConstantInitializers) {
   // GLSL ES allows only constant initializers for globals.
   const std::string text = R"(#version 300 es

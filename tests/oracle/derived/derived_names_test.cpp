@@ -96,5 +96,27 @@ void main()
   EXPECT_EQ(values[0], std::vector<double>{11.0});
 }
 
+// A capture on the then way's last line, with an else: the then way's
+// value, as the probe writes it there (not the value from before the if).
+TEST(DerivedNames, ACaptureOnTheLastLineOfAThenWayIsThatWaysValue) {
+  const std::string text = R"(#version 330 core
+out vec4 FragColor;
+void main() {
+  float R = 1.0;
+  if (R > 0.5) {
+    R = 2.0;
+  } else {
+    R = 3.0;
+  }
+  FragColor = vec4(R);
+}
+)";
+  const derived::Program program =
+      derived::lowerOutputs({"user.frag", text, derived::Stage::Fragment}, {{"R", 6}});
+  const auto values = derived::evaluateProgram<double>(program, {}, {}, 1);
+  ASSERT_EQ(values.size(), 1u);
+  EXPECT_EQ(values[0], std::vector<double>{2.0});
+}
+
 }  // namespace
 }  // namespace snell::test

@@ -145,6 +145,37 @@ void main() {
 }
 )");
   EXPECT_TRUE(mentions(message, "user.vert:5: floor()")) << message;
+  // Columns are the parsed text's, where each literal has a longer name.
+  const std::string afterLiterals = refusalOf(R"(#version 330 core
+uniform float a;
+out float t;
+void main() {
+  t = 2.0 * 0.5 * fract(a) + 1.0;
+}
+)");
+  EXPECT_TRUE(mentions(afterLiterals, "user.vert:5: fract()")) << afterLiterals;
+}
+
+// A read-back value fed in on every iteration of a loop has no single
+// value the oracle could hold the iterations to.
+TEST(DerivedRefusal, AFedCaptureInsideALoopIsRefused) {
+  const std::string loop = R"(#version 330 core
+out vec4 FragColor;
+void main() {
+  vec2 acc = vec2(0.0);
+  for (int k = 0; k < 2; k++) {
+    vec2 p = gl_FragCoord.xy * float(k + 1);
+    acc = acc + p;
+  }
+  FragColor = vec4(acc, 0.0, 1.0);
+}
+)";
+  try {
+    derived::lowerOutputs({"user.frag", loop, derived::Stage::Fragment}, {{"p", 6}});
+    FAIL() << "a fed capture inside a loop was lowered";
+  } catch (const UsageError& e) {
+    EXPECT_TRUE(mentions(e.what(), "inside a loop")) << e.what();
+  }
 }
 
 // A bool uniform, which snell cannot set: refused where it is read (the
