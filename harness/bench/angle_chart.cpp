@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 
@@ -33,14 +34,21 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
       for (const AngleBin& bin : r.errorByAngle)
         if (bin.error.compared > 0)
           file << 0.5 * (bin.fromDeg + bin.toDeg) << ' ' << errorMetric(bin.error, metric) << '\n';
-      series += fmt::format("{}'{}' using 1:2 with linespoints lc {} lw 2 pt 7 title '{}'",
-                            series.empty() ? "" : ", ", data, colour, shortMethodName(r.method));
+      // Methods that converge (more wavelengths past the point where they
+      // stop mattering) give the same curve: each later one is drawn
+      // narrower and with smaller marks, on top, so the earlier one shows
+      // around it instead of being hidden.
+      const int later = std::min(colour - 1, 6);
+      series +=
+          fmt::format("{}'{}' using 1:2 with linespoints lc {} lw {:.1f} pt 7 ps {:.2f} title '{}'",
+                      series.empty() ? "" : ", ", data, colour, 4.0 - 0.5 * later,
+                      1.7 - 0.15 * later, shortMethodName(r.method));
       ++colour;
     }
     out += fmt::format(
         "set title '{}'\nset xlabel 'angle of incidence (degrees; bin centres)'\n"
         "set ylabel '{}'\nset logscale y\nset grid\nset xrange [0:90]\nset xtics 10\n"
-        "set key top left font ',8'\nplot {}\n",
+        "set key bottom right font ',8'\nplot {}\n",
         backend, errorMetricLabel(metric), series);
   }
   return out + "unset multiplot";

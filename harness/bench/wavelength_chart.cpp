@@ -36,11 +36,17 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
           << wavelengthCount(r) << ' ' << errorMetric(r.error, metric) << " \""
           << shortMethodName(r.method) << "\"\n";
     }
+    // Backends often agree to the last digit: each later one is drawn
+    // narrower, dashed and with smaller, filled marks, so it shows inside
+    // the earlier one's wide line and open marks instead of hiding them.
+    const bool first = colour == 1;
     series += fmt::format(
-        "{}'{}' using 1:2 with linespoints lc {} lw 2 pt 7 ps 1.2 title '{}: N wavelengths', "
-        "'{}' using 1:2 with points lc {} pt 4 ps 1.4 title '{}: one index per channel', "
+        "{}'{}' using 1:2 with linespoints lc {} lw {} dt {} pt {} ps {} title '{}: N "
+        "wavelengths', "
+        "'{}' using 1:2 with points lc {} pt {} ps {} title '{}: one index per channel', "
         "'{}' using 1:2:3 with labels offset 0.8,{} left font ',8' tc lt {} notitle",
-        series.empty() ? "" : ", ", spectral, colour, backend, perChannel, colour, backend,
+        series.empty() ? "" : ", ", spectral, colour, first ? 4 : 1.5, first ? 1 : 2, first ? 6 : 7,
+        first ? 2.0 : 0.8, backend, perChannel, colour, first ? 4 : 5, first ? 2.2 : 0.9, backend,
         perChannel, colour == 1 ? "0.6" : "-0.6", colour);
     ++colour;
   }

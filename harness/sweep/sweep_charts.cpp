@@ -7,12 +7,15 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <set>
 #include <string_view>
 #include <system_error>
 
 #include "report/gnuplot_batch.h"
 #include "report/sweep_findings.h"
+#include "sweep/chart_series.h"
 
 namespace snell::sweep {
 namespace {
@@ -43,6 +46,8 @@ class ChartData {
   void add(const std::string& name, double x, double y) {
     rows_[name] += fmt::format("{:.10g} {:.10g}\n", x, y);
   }
+  // Appends rows ("x y\n" each) to the named curve's file.
+  void addRows(const std::string& name, const std::string& rows) { rows_[name] += rows; }
   // Writes every curve whose name starts with `prefix`; returns them, titled by the rest.
   std::vector<Curve> curves(const std::string& prefix, const std::string& style) {
     std::vector<Curve> out;
@@ -87,11 +92,11 @@ std::string plotCommands(const std::vector<Curve>& curves) {
   return plot + "\n";
 }
 
-void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
-              const std::string& stem, const std::string& settings,
-              const std::vector<Curve>& curves) {
-  if (curves.empty()) return;
-  const std::string body = settings + plotCommands(curves);
+// A chart of `width` x `height` pixels from a whole gnuplot body (the
+// settings and the plot commands).
+void addChartBody(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
+                  const std::string& stem, const std::string& body, int width = 1100,
+                  int height = 560) {
   // gnuplot's `name` is the SVG's <title> (a tooltip, and what a screen
   // reader announces): letters, digits and '_' only.
   std::string name = stem;
@@ -102,14 +107,21 @@ void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::pat
   // forty characters above it (gnuplot centres the title on the plot, not
   // on the picture: at 900 pixels the longer ones were cut at both ends).
   batch.add(fmt::format(
-      "set terminal svg size 1100,560 font 'sans,10' background '#ffffff' standalone noenhanced "
+      "set terminal svg size {},{} font 'sans,10' background '#ffffff' standalone noenhanced "
       "name '{}'\nset output '{}.svg'\n{}",
-      name, stem, body));
+      width, height, name, stem, body));
   batch.add(fmt::format(
-      "set terminal pngcairo size 1100,560 font 'sans,10' noenhanced\nset output '{}.png'\n{}",
-      stem, body));
+      "set terminal pngcairo size {},{} font 'sans,10' noenhanced\nset output '{}.png'\n{}", width,
+      height, stem, body));
   written.push_back(outDir / (stem + ".svg"));
   written.push_back(outDir / (stem + ".png"));
+}
+
+void addChart(GnuplotBatch& batch, std::vector<fs::path>& written, const fs::path& outDir,
+              const std::string& stem, const std::string& settings,
+              const std::vector<Curve>& curves) {
+  if (curves.empty()) return;
+  addChartBody(batch, written, outDir, stem, settings + plotCommands(curves));
 }
 
 // The closed-form critical angle on an angle x eta map: sin(theta_c) = 1 / eta.
@@ -185,6 +197,90 @@ void addListingMaps(GnuplotBatch& batch, std::vector<fs::path>& written, const f
   }
 }
 
+// Each method's line, the same in every panel. Drawn in the methods'
+// order, a later line is narrower or dashed, so one that lies on an
+// earlier one (schlick_dense_side is schlick where n1 < n2) stays visible.
+std::string methodLine(const std::string& method) {
+  if (method == "constant") return "with lines lw 4 lc rgb '#9467bd'";
+  if (method == "exact") return "with lines lw 3 lc rgb '#2ca02c'";
+  if (method == "schlick") return "with lines lw 2 lc rgb '#1f77b4'";
+  return "with lines lw 2 dt 2 lc rgb '#ff7f0e'";
+}
+
+// The Fresnel methods' error against angle: one column per side of the
+// interface (the two are different curves: on one line the light going
+// into the dense medium hid the one coming out of it), the whole range
+// above and the band around the bound below (on the whole range, down to
+// -1, the bound's +-0.02 is a few pixels). Exact Fresnel in double is the
+// reference itself: drawn only where it is not 0 throughout.
+void addMethodErrorChart(GnuplotBatch& batch, std::vector<fs::path>& written,
+                         const fs::path& outDir, const std::vector<MethodSample>& samples) {
+  std::map<double, std::map<std::string, std::string>> bySide;  // eta -> method -> rows
+  bool exactIsZero = true;
+  for (const MethodSample& s : samples) {
+    if (!charted(s.eta) || std::abs(s.eta - 0.66) < 1e-9) continue;
+    if (s.method == "exact" && s.error() != 0) exactIsZero = false;
+    bySide[s.eta][s.method] += fmt::format("{:.10g} {:.10g}\n", s.angleDegrees, s.error());
+  }
+  if (bySide.empty()) return;
+  std::vector<std::string> plots;  // one per column
+  for (const auto& [eta, methods] : bySide) {
+    std::vector<std::string> names, rows;
+    for (const auto& [method, data] : methods) {
+      if (method == "exact" && exactIsZero) continue;
+      names.push_back(method);
+      rows.push_back(data);
+    }
+    const std::vector<std::optional<std::size_t>> same = sameAsEarlier(rows);
+    std::string plot = "plot ";
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const std::string file =
+          fmt::format("{}/error-{}-eta-{:.4g}.dat", kChartDataFolder, safe(names[k]), eta);
+      std::ofstream(outDir / file) << rows[k];
+      const std::string title =
+          same[k] ? fmt::format("{} (the same as {} here)", names[k], names[*same[k]]) : names[k];
+      plot += fmt::format("{}'{}' using 1:2 {} title '{}'", k ? ", " : "", file,
+                          methodLine(names[k]), title);
+    }
+    plots.push_back(plot + "\n");
+  }
+  const auto columnTitle = [](double eta) {
+    if (eta < 1) return fmt::format("n1 < n2 (eta {:.4g}): into the denser medium", eta);
+    return fmt::format("n1 > n2 (eta {:.4g}): total internal reflection past {:.4g} (dotted)", eta,
+                       std::asin(1 / eta) * 180 / std::numbers::pi);
+  };
+  std::string body = fmt::format(
+      "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\nset ylabel "
+      "'error'\nset arrow 1 from 0,{0} to 90,{0} nohead dt 2\n"
+      "set arrow 2 from 0,-{0} to 90,-{0} nohead dt 2\n"
+      "set multiplot layout 2,{1} title 'Fresnel methods: reflectance minus exact Fresnel (the "
+      "bound {0}: dashed black){2}'\n",
+      kMethodErrorBound, plots.size(),
+      exactIsZero ? "; exact Fresnel in double is the reference, 0 throughout, not drawn" : "");
+  std::size_t column = 0;
+  for (const auto& [eta, methods] : bySide) {
+    const std::string critical =
+        eta > 1 ? fmt::format("set arrow 3 from {0},graph 0 to {0},graph 1 nohead dt 3\n",
+                              std::asin(1 / eta) * 180 / std::numbers::pi)
+                : "unset arrow 3\n";
+    body += fmt::format("set title '{}'\nset yrange [*:*]\nset key bottom left opaque box\n{}{}",
+                        columnTitle(eta), critical, plots[column++]);
+  }
+  column = 0;
+  for (const auto& [eta, methods] : bySide) {
+    const std::string critical =
+        eta > 1 ? fmt::format("set arrow 3 from {0},graph 0 to {0},graph 1 nohead dt 3\n",
+                              std::asin(1 / eta) * 180 / std::numbers::pi)
+                : "unset arrow 3\n";
+    body += fmt::format(
+        "set title 'the same, near the bound ({:.4g} to {:.4g})'\nset yrange "
+        "[{:.4g}:{:.4g}]\nunset key\n{}{}",
+        -5 * kMethodErrorBound, 5 * kMethodErrorBound, -5 * kMethodErrorBound,
+        5 * kMethodErrorBound, critical, plots[column++]);
+  }
+  addChartBody(batch, written, outDir, "sweep-method-error", body + "unset multiplot\n", 1100, 820);
+}
+
 // The sweep's charts are named sweep-*.svg and .png.
 bool isChartName(const std::string& name) {
   const fs::path extension = fs::path(name).extension();
@@ -255,19 +351,21 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
       }
     }
   }
-  for (const MethodSample& s : result.methodSamples)
-    if (charted(s.eta) && std::abs(s.eta - 0.66) > 1e-9)
-      data.add(fmt::format("error/{} eta {:.4g}", s.method, s.eta), s.angleDegrees, s.error());
+  std::vector<MapMark> refractMarks, methodMarks;
   for (const Break& b : result.breaks) {
     const SweepPoint& p = result.points[b.point];
     if (p.input != "grid" || p.call.fn != "refract") continue;
-    data.add(fmt::format("map/refract/{} {} ({})", b.backend, b.kind, breakClassName(b.cls)),
-             p.angleDegrees, p.eta);
+    refractMarks.push_back(
+        {b.backend, fmt::format("{} ({})", b.kind, breakClassName(b.cls)), p.angleDegrees, p.eta});
   }
+  for (const auto& [title, rows] : mergedMarks(refractMarks))
+    data.addRows("map/refract/" + title, rows);
   for (const Break& b : result.methodBreaks) {
     const MethodSample& s = result.methodSamples[b.point];
-    data.add(fmt::format("map/method/{} {}", s.method, b.kind), s.angleDegrees, s.eta);
+    methodMarks.push_back({s.method, b.kind, s.angleDegrees, s.eta});
   }
+  for (const auto& [title, rows] : mergedMarks(methodMarks))
+    data.addRows("map/method/" + title, rows);
 
   GnuplotBatch batch(outDir);
   std::vector<fs::path> written;
@@ -294,14 +392,7 @@ std::vector<fs::path> writeSweepCharts(const SweepResult& result, const fs::path
                         reflectWorst > 0 ? "" : " (every result exact: slack 0 throughout)",
                         reflectWorst > 0 ? "0:*" : "-0.05:1"),
         data.curves("slack/reflect/", "with points"));
-  addChart(batch, written, outDir, "sweep-method-error",
-           angleAxis + fmt::format("set title 'Fresnel methods: reflectance minus exact Fresnel "
-                                   "(bound {})'\nset ylabel 'error'\n"
-                                   "set arrow from 0,{} to 90,{} nohead dt 2\n"
-                                   "set arrow from 0,-{} to 90,-{} nohead dt 2\n",
-                                   kMethodErrorBound, kMethodErrorBound, kMethodErrorBound,
-                                   kMethodErrorBound, kMethodErrorBound),
-           data.curves("error/", "with lines lw 1.5"));
+  addMethodErrorChart(batch, written, outDir, result.methodSamples);
   const std::string mapAxes =
       "set xlabel 'incidence angle (degrees)'\nset ylabel 'eta (n1/n2)'\n"
       "set xrange [0:90]\nset yrange [0.25:2.55]\nset grid\n"
