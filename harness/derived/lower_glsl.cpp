@@ -617,6 +617,12 @@ class Lowering {
         const auto [key, name] = member(node);
         noteName(name, key, isBlockMember(node));
         auto found = variables_.find(key);
+        if (found == variables_.end() && node.getLeft()->getQualifier().storage == EvqUniform)
+          refuse(node,
+                 fmt::format("the uniform struct member {}.{} (snell sets uniforms of "
+                             "float, vec2-4, mat3 and mat4 types, not members of a struct: "
+                             "declare {} as a uniform of its own)",
+                             node.getLeft()->getAsSymbolNode()->getName().c_str(), name, name));
         if (found == variables_.end())
           refuse(node, fmt::format("reading {} before it is assigned", name));
         return checkedRead(found->second, node);
@@ -890,7 +896,9 @@ class Lowering {
     return finder.found;
   }
 
-  // A user function, inlined: its `in` parameters bound to the arguments.
+  // A user function, inlined: its `in` and `inout` parameters bound to the
+  // arguments; its `out` and `inout` parameters copied out to the
+  // arguments when it returns (GLSL 4.60 section 6.1.1).
   Value call(TIntermAggregate& node) {
     auto found = functions_.find(node.getName().c_str());
     if (found == functions_.end())
@@ -898,8 +906,16 @@ class Lowering {
     TIntermAggregate& function = *found->second;
     if (std::find(callStack_.begin(), callStack_.end(), &function) != callStack_.end())
       refuse(node, "recursion");
-    std::vector<Value> args;
-    for (TIntermNode* child : node.getSequence()) args.push_back(expression(*child->getAsTyped()));
+    const glslang::TIntermSequence& parameters =
+        function.getSequence()[0]->getAsAggregate()->getSequence();
+    const glslang::TIntermSequence& arguments = node.getSequence();
+    const auto storageOf = [&](std::size_t k) {
+      return parameters[k]->getAsSymbolNode()->getQualifier().storage;
+    };
+    // An out argument's value on the way in is not the callee's to read.
+    std::vector<Value> args(arguments.size());
+    for (std::size_t k = 0; k < arguments.size(); ++k)
+      if (storageOf(k) != glslang::EvqOut) args[k] = expression(*arguments[k]->getAsTyped());
     // A return before the end (a ray march's `if (hit) return t;` in a
     // loop) is outside the subset; the call's value is refused, so a
     // fragment capture computed from it can still be read back and fed in.
@@ -910,15 +926,12 @@ class Lowering {
           early->getLoc().line);
       return refused;
     }
-    const glslang::TIntermSequence& parameters =
-        function.getSequence()[0]->getAsAggregate()->getSequence();
     for (std::size_t k = 0; k < parameters.size(); ++k) {
-      TIntermSymbol* parameter = parameters[k]->getAsSymbolNode();
-      const glslang::TStorageQualifier storage = parameter->getQualifier().storage;
-      if (storage == glslang::EvqOut || storage == glslang::EvqInOut)
-        refuse(node, fmt::format("the out/inout parameter {} of {}", parameter->getName().c_str(),
-                                 function.getName().c_str()));
-      variables_[symbolKey(*parameter)] = args[k];
+      const Key key = symbolKey(*parameters[k]->getAsSymbolNode());
+      if (storageOf(k) == glslang::EvqOut)
+        variables_.erase(key);  // unset on entry, whatever an earlier call left
+      else
+        variables_[key] = args[k];
     }
     callStack_.push_back(&function);
     const bool wasInMain = inMain_;
@@ -929,6 +942,22 @@ class Lowering {
     inMain_ = wasInMain;
     inFunction_ = wasInFunction;
     callStack_.pop_back();
+    for (std::size_t k = 0; k < parameters.size(); ++k) {
+      if (storageOf(k) != glslang::EvqOut && storageOf(k) != glslang::EvqInOut) continue;
+      TIntermSymbol& parameter = *parameters[k]->getAsSymbolNode();
+      const auto value = variables_.find(symbolKey(parameter));
+      if (value != variables_.end()) {
+        store(*arguments[k]->getAsTyped(), value->second);
+        continue;
+      }
+      Value unset{shapeOf(parameter), {}, {}};
+      unset.refusal = builder_.located(
+          fmt::format("{0}) may leave its out parameter {1} unset, so the argument has no value "
+                      "after the call; assign {1} on every way through {0})",
+                      functionName(function), parameter.getName().c_str()),
+          node.getLoc().line);
+      store(*arguments[k]->getAsTyped(), unset);
+    }
     return result;
   }
 

@@ -52,6 +52,30 @@ void main() {
   EXPECT_EQ(R, std::vector<double>{1.5});
 }
 
+// An out or inout parameter is the caller's variable after the call: the
+// callee's value is copied out when it returns (GLSL 4.60 section 6.1.1),
+// into a local or a pipeline output alike.
+TEST(DerivedNames, AnOutParameterIsTheCallersVariableAfterTheCall) {
+  const std::vector<double> values = exactOutputs(R"(#version 330 core
+out float R;
+out vec3 S;
+void h(in float x, out float y) { y = x * 2.0; }
+void g(inout vec3 v, out vec3 w) { v.y += 1.0; w = v * 2.0; }
+void main() {
+  float y;
+  h(1.25, y);
+  R = y;
+  vec3 v = vec3(1.0, 2.0, 3.0);
+  g(v, S);
+  S += v;
+  h(R, y);
+  gl_Position = vec4(y);
+}
+)",
+                                                  {"R", "S"});
+  EXPECT_EQ(values, (std::vector<double>{2.5, 3.0, 9.0, 9.0}));
+}
+
 TEST(DerivedNames, IntsWrapToTheirLow32Bits) {
   const std::vector<double> values = exactOutputs(R"(#version 330 core
 out float big;

@@ -135,6 +135,36 @@ TEST(DerivedRefusal, ASyntaxErrorIsReportedWithGlslangsMessage) {
   EXPECT_TRUE(mentions(message, "user.vert: glslang cannot compile")) << message;
 }
 
+// An out parameter the callee leaves unset has no value after the call;
+// a uniform struct member is one snell cannot set. Each is said as such,
+// not as a variable read before it is assigned.
+TEST(DerivedRefusal, AnOutParameterLeftUnsetIsNamed) {
+  const std::string message = refusalOf(R"(#version 330 core
+uniform float a;
+out float t;
+void h(in float x, out float y) { float z = x; }
+void main() {
+  float y;
+  h(a, y);
+  t = y;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:7: h() may leave its out parameter y unset")) << message;
+}
+
+TEST(DerivedRefusal, AUniformStructMemberIsNamed) {
+  const std::string message = refusalOf(R"(#version 330 core
+uniform float a;
+struct Light { float k; };
+uniform Light L;
+out float t;
+void main() {
+  t = L.k * a;
+}
+)");
+  EXPECT_TRUE(mentions(message, "user.vert:7: the uniform struct member L.k")) << message;
+}
+
 // An unsupported built-in is named, so that a line calling two says which.
 TEST(DerivedRefusal, AnUnsupportedBuiltInIsNamed) {
   const std::string message = refusalOf(R"(#version 330 core
