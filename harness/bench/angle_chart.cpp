@@ -38,11 +38,11 @@ std::string plotCommands(const BenchResults& results, const std::string& metric,
       // stop mattering) give the same curve: each later one is drawn
       // narrower and with smaller marks, on top, so the earlier one shows
       // around it instead of being hidden.
-      const int later = std::min(colour - 1, 6);
+      const int later = std::min(colour - 1, 5);
       series +=
           fmt::format("{}'{}' using 1:2 with linespoints lc {} lw {:.1f} pt 7 ps {:.2f} title '{}'",
-                      series.empty() ? "" : ", ", data, colour, 4.0 - 0.5 * later,
-                      1.7 - 0.15 * later, shortMethodName(r.method));
+                      series.empty() ? "" : ", ", data, colour, 5.0 - 0.8 * later,
+                      2.0 - 0.3 * later, shortMethodName(r.method));
       ++colour;
     }
     out += fmt::format(
