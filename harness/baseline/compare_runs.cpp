@@ -21,12 +21,15 @@ std::map<std::string, const CaseResult*> keyed(const RunSide& side, bool byCase)
   return out;
 }
 
-// The largest error against the CPU reference image, or NaN for a case
-// that drew nothing.
-double referenceImageError(const CaseResult& r) {
-  for (const ImageComparison& c : r.images)
-    if (c.against == "reference") return c.maxError;
-  return std::nan("");
+// The largest image error of a result against each thing it was compared
+// with: the CPU reference, the golden, the other API's image.
+std::map<std::string, double> imageErrors(const CaseResult& r) {
+  std::map<std::string, double> errors;
+  for (const ImageComparison& c : r.images) {
+    const auto [it, fresh] = errors.emplace(c.against, c.maxError);
+    if (!fresh) it->second = std::max(it->second, c.maxError);
+  }
+  return errors;
 }
 
 void checkDrift(const std::string& key, const std::string& metric, double from, double to,
@@ -89,8 +92,14 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
       c.fixes.push_back(change);
     checkDrift(key, "worst slack", old->worstSlack(), now.worstSlack(), rule.slackFloor, rule,
                c.drift);
-    checkDrift(key, "image error vs reference", referenceImageError(*old), referenceImageError(now),
-               rule.imageFloor, rule, c.drift);
+    // Each image comparison both runs made: a growing distance from the
+    // golden (what was blessed) or from the other API is drift as much as
+    // one from the reference.
+    const std::map<std::string, double> before = imageErrors(*old);
+    for (const auto& [against, error] : imageErrors(now))
+      if (const auto was = before.find(against); was != before.end())
+        checkDrift(key, "image error vs " + against, was->second, error, rule.imageFloor, rule,
+                   c.drift);
   }
   for (const auto& [key, r] : b)
     if (!a.count(key)) c.added.push_back(key);

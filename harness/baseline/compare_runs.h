@@ -40,7 +40,7 @@ struct StatusChange {
 
 struct Drift {
   std::string key;
-  std::string metric;  // "worst slack", "image error vs reference"
+  std::string metric;  // "worst slack", "image error vs reference" (or golden, other-backend:A/B)
   double from = 0, to = 0;
 };
 

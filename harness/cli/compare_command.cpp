@@ -68,7 +68,9 @@ Command addCompareCommand(CLI::App& app) {
       ->check(CLI::Range(1.0, 1e12))
       ->check(notNan())
       ->capture_default_str();
-  sub->footer("Exit 1 when any comparison has a regression (a status worse than before).");
+  sub->footer(
+      "Exit 1 when any comparison has a regression (a status worse than before), or when a "
+      "later run was interrupted (the cases it did not reach were not checked).");
   return [options] {
     std::vector<RunSide> sides;
     for (const std::string& run : options->runs) sides.push_back(readSide(run));
@@ -76,16 +78,27 @@ Command addCompareCommand(CLI::App& app) {
     rule.factor = options->drift;
     nlohmann::json all = nlohmann::json::array();
     bool regressed = false;
+    std::vector<std::string> interrupted;
     for (std::size_t k = 1; k < sides.size(); ++k) {
       const RunComparison c = compareRuns(sides[k - 1], sides[k], rule);
       regressed = regressed || !c.regressions.empty();
+      // A gate on `compare old new` must not pass on a run cut short: the
+      // cases it did not reach may fail (merge and run say the same).
+      if (sides[k].incomplete)
+        interrupted.push_back(fmt::format("{} ({} case(s) of {} not reached)", sides[k].label,
+                                          c.notReached.size(), sides[k - 1].label));
       if (options->json)
         all.push_back(comparisonToJson(c));
       else
         printComparison(std::cout, c, rule);
     }
     if (options->json) std::cout << jsonText(all, 2) << "\n";
-    return regressed ? 1 : 0;
+    if (!interrupted.empty())
+      fmt::print(stderr,
+                 "snell compare: exit 1: {} is an interrupted run, and the gate does not pass "
+                 "on one; finish it (`snell run --resume FILE.partial`) or run it again\n",
+                 fmt::join(interrupted, "; "));
+    return regressed || !interrupted.empty() ? 1 : 0;
   };
 }
 

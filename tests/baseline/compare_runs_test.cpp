@@ -160,6 +160,35 @@ TEST(CompareRuns, EveryCategory) {
   EXPECT_EQ(json["drift"][1]["to"], 0.25);
 }
 
+// A growing distance from the golden (what was blessed, 0 before) or from
+// the other API's image is drift too, each named by what it was against;
+// a comparison the earlier run did not make is not.
+TEST(CompareRuns, GoldenAndOtherBackendImageErrorsDrift) {
+  const auto withImages = [](std::vector<std::pair<std::string, double>> images) {
+    CaseResult r = result("image", "gl", Status::Pass);
+    for (const auto& [against, error] : images) {
+      ImageComparison c;
+      c.against = against;
+      c.maxError = error;
+      r.images.push_back(c);
+    }
+    return r;
+  };
+  const RunSide before =
+      side("a.jsonl",
+           {withImages({{"reference", 1e-3}, {"golden", 0.0}, {"other-backend:gl/vk", 1e-5}})});
+  const RunSide after = side("b.jsonl", {withImages({{"reference", 1e-3},
+                                                     {"golden", 4e-3},
+                                                     {"other-backend:gl/vk", 4e-3},
+                                                     {"other-backend:gl/gl:softpipe", 1.0}})});
+  const RunComparison c = compareRuns(before, after, DriftRule{});
+  ASSERT_EQ(c.drift.size(), 2u);
+  EXPECT_EQ(c.drift[0].metric, "image error vs golden");
+  EXPECT_EQ(c.drift[0].to, 4e-3);
+  EXPECT_EQ(c.drift[1].metric, "image error vs other-backend:gl/vk");
+  EXPECT_EQ(c.drift[1].from, 1e-5);
+}
+
 TEST(CompareRuns, BackendHalvesCompareCaseByCase) {
   const RunSide run = side(
       "r.jsonl", {result("x", "gl", Status::Pass), result("x", "vk", Status::CompatibilityWarning),

@@ -129,18 +129,26 @@ TEST(CompareCli, AFileThatIsNoFinishedRunIsExit2) {
 
 // An interrupted run is compared (it is what there is), with a note that
 // its missing cases were never reached; they are listed as not reached, not
-// as removed.
-TEST(CompareCli, AnInterruptedRunIsNoted) {
+// as removed, and the gate does not pass (exit 1, as merge's): the cases
+// it did not reach were not checked.
+TEST(CompareCli, AnInterruptedRunIsNotedAndDoesNotPass) {
   nlohmann::json unfinished = record("x/y/z", "gl", "Pass", 0.1);
   unfinished["incomplete"] = true;
   const fs::path whole =
       writeRun("w.jsonl", {record("x/y/z", "gl", "Pass", 0.1), record("x/y/w", "gl", "Pass", 0.1)});
   const fs::path part = writeRun("p.jsonl", {unfinished});
   const Outcome o = snell(fmt::format("compare {} {}", whole.string(), part.string()));
-  EXPECT_EQ(o.code, 0) << o.out;
+  EXPECT_EQ(o.code, 1) << o.out;
+  EXPECT_NE(o.out.find("exit 1: " + part.string() + " (1 case(s) of " + whole.string() +
+                       " not reached) is an interrupted run"),
+            std::string::npos)
+      << o.out;
   EXPECT_NE(o.out.find(part.string() + " is an interrupted run"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("0 removed, 1 not reached"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("not reached  gl x/y/w"), std::string::npos) << o.out;
+  // An interrupted earlier run leaves nothing of the later one unchecked.
+  const Outcome earlier = snell(fmt::format("compare {} {}", part.string(), whole.string()));
+  EXPECT_EQ(earlier.code, 0) << earlier.out;
   fs::remove(whole);
   fs::remove(part);
 }
