@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "baseline/expectation_file.h"
 #include "baseline/merge_results.h"
@@ -19,6 +20,7 @@
 #include "core/atomic_file.h"
 #include "core/errors.h"
 #include "core/message.h"
+#include "report/recorded_images.h"
 #include "runner/cross_api_check.h"
 #include "runner/image_check.h"
 
@@ -29,7 +31,8 @@ namespace {
 // The images the pending cross-backend comparisons will read (pairs of
 // backends that ran in different shards): a missing one means --out is not
 // where the shards' images were gathered, which is the user's to fix
-// (exit 2), not a difference between backends.
+// (exit 2), not a difference between backends; so is an image that is not
+// the one its shard recorded.
 void requireImagesToCompare(const std::vector<BackendPair>& pairs,
                             const std::filesystem::path& out) {
   if (!pairs.empty() && !std::filesystem::is_directory(out))
@@ -39,26 +42,43 @@ void requireImagesToCompare(const std::vector<BackendPair>& pairs,
                     out.string()));
   for (const BackendPair& pair : pairs) {
     const std::string& id = pair.imageCase->id;
-    for (const std::filesystem::path& image :
-         {renderedImagePath(out, id, pair.a->backend), renderedImagePath(out, id, pair.b->backend),
-          maskImagePath(out, id)})
-      if (!std::filesystem::is_regular_file(image)) {
+    const auto readable = [&](const std::filesystem::path& image) {
+      if (!std::filesystem::is_regular_file(image))
         throw UsageError(fmt::format(
             "{}: missing, and the comparison of {} on {} and {} needs it; gather the shards' "
             "--out folders into one and pass it as --out DIR",
             image.string(), id, pair.a->backend, pair.b->backend));
-      } else {
-        // A damaged copy would be compared as a difference between the
-        // drivers (a CompatibilityWarning on both), which it is not.
-        try {
-          readImage(image);
-        } catch (const std::exception& error) {
-          throw UsageError(fmt::format(
-              "{}: cannot be read ({}), and the comparison of {} on {} and {} needs it; copy "
-              "it again from the shard's --out folder",
-              image.string(), error.what(), id, pair.a->backend, pair.b->backend));
-        }
+      // A damaged copy would be compared as a difference between the
+      // drivers (a CompatibilityWarning on both), which it is not.
+      try {
+        return readImage(image);
+      } catch (const std::exception& error) {
+        throw UsageError(fmt::format(
+            "{}: cannot be read ({}), and the comparison of {} on {} and {} needs it; copy "
+            "it again from the shard's --out folder",
+            image.string(), error.what(), id, pair.a->backend, pair.b->backend));
       }
+    };
+    readable(maskImagePath(out, id));
+    const std::filesystem::path referencePath = out / id / "reference.exr";
+    const std::optional<Image> reference = std::filesystem::is_regular_file(referencePath)
+                                               ? std::optional<Image>(readable(referencePath))
+                                               : std::nullopt;
+    const std::vector<bool> masked = maskFlags(maskImagePath(out, id));
+    for (const CaseResult* record : {pair.a, pair.b}) {
+      const std::filesystem::path path = renderedImagePath(out, id, record->backend);
+      const Image rendered = readable(path);
+      // An image another run left there (an earlier pipeline's, another
+      // job's) would be compared as this shard's: a divergence between the
+      // drivers hidden, or one made up.
+      if (!reference) continue;
+      if (const auto other = differenceNotAsRecorded(*record, rendered, *reference, masked))
+        throw UsageError(fmt::format(
+            "{}: not the image the shard recorded for {} on {}: its largest difference from "
+            "the reference beside it is {:.3g}, the shard recorded {:.3g}; it is another run's. "
+            "Gather that shard's own --out folder into --out",
+            path.string(), id, record->backend, other->there, other->recorded));
+    }
   }
 }
 

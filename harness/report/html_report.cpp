@@ -23,6 +23,7 @@
 #include "report/data_uri.h"
 #include "report/gnuplot_batch.h"
 #include "report/heat_map_chart.h"
+#include "report/recorded_images.h"
 #include "report/report_template.h"
 #include "report/slack_histogram_chart.h"
 #include "report/sweep_findings.h"
@@ -77,15 +78,6 @@ struct PendingPicture {
   fs::path file;
   std::string mime;
 };
-
-std::vector<bool> maskFlags(const fs::path& maskFile) {
-  std::vector<bool> flags;
-  if (!fs::exists(maskFile)) return flags;
-  const Image mask = readImage(maskFile);
-  flags.resize(static_cast<std::size_t>(mask.width) * mask.height);
-  for (std::size_t p = 0; p < flags.size(); ++p) flags[p] = mask.pixels[p * 4] != 0;
-  return flags;
-}
 
 // Images whose size differs from the other's cannot be differenced.
 bool sameSize(const Image& a, const Image& b) { return a.width == b.width && a.height == b.height; }
@@ -444,19 +436,13 @@ class ReportBuilder {
   // numbers, with captions that contradicted them.
   std::string anotherRunsImages(const CaseResult& r, const Image* rendered, const Image* reference,
                                 const std::vector<bool>& masked) const {
-    if (!rendered || !reference || !sameSize(*rendered, *reference)) return "";
-    for (const ImageComparison& c : r.images) {
-      if (c.against != "reference" || !c.problem.empty()) continue;
-      const double there = largestDifference(*rendered, *reference, masked);
-      // The same images give the same number, up to the float rounding of
-      // the comparison library's own difference.
-      if (std::abs(there - c.maxError) <= 1e-4 * std::max(there, c.maxError) + 1e-7) return "";
-      return fmt::format(
-          "No pictures: the {} image in {} is another run's. Its largest difference from the "
-          "reference there is {:.3g}; this run recorded {:.3g}. Pass --images this run's --out.",
-          r.backend, options_.imagesDir.string(), there, c.maxError);
-    }
-    return "";
+    if (!rendered || !reference) return "";
+    const auto other = differenceNotAsRecorded(r, *rendered, *reference, masked);
+    if (!other) return "";
+    return fmt::format(
+        "No pictures: the {} image in {} is another run's. Its largest difference from the "
+        "reference there is {:.3g}; this run recorded {:.3g}. Pass --images this run's --out.",
+        r.backend, options_.imagesDir.string(), other->there, other->recorded);
   }
 
   // The golden the run compared `r`'s image with, and the heat map of the

@@ -254,6 +254,28 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
   for (const auto& entry : fs::recursive_directory_iterator(out))
     if (entry.path().filename() == "vk.exr") damaged = entry.path();
   ASSERT_FALSE(damaged.empty());
+  // So is an image that is not the one its shard recorded (another run's,
+  // here the reference itself, 0 from it where the shard recorded more):
+  // it was compared across the APIs as the shard's, and the merge passed.
+  double recorded = 0;
+  for (const nlohmann::json& r : records(scratch / "jobv.jsonl"))
+    for (const nlohmann::json& image : r["images"])
+      if (image["against"] == "reference") recorded = image["max_error"].get<double>();
+  ASSERT_GT(recorded, 1e-6);  // lavapipe's image is not the reference, bit for bit
+  const fs::path kept = scratch / "vk-kept.exr";
+  fs::copy_file(damaged, kept);
+  fs::copy_file(damaged.parent_path() / "reference.exr", damaged,
+                fs::copy_options::overwrite_existing);
+  const Outcome stale =
+      snell(fmt::format("merge {} {} {} --out {} --json {}", (scratch / "job2.jsonl").string(),
+                        (scratch / "jobv.jsonl").string(), (scratch / "job1.jsonl").string(), out,
+                        (scratch / "stale.jsonl").string()));
+  EXPECT_EQ(stale.code, 2) << stale.out;
+  EXPECT_NE(stale.out.find(damaged.string() + ": not the image the shard recorded"),
+            std::string::npos)
+      << stale.out;
+  EXPECT_FALSE(fs::exists(scratch / "stale.jsonl"));
+  fs::copy_file(kept, damaged, fs::copy_options::overwrite_existing);
   fs::resize_file(damaged, 500);
   const Outcome broken =
       snell(fmt::format("merge {} {} {} --out {} --json {}", (scratch / "job2.jsonl").string(),
