@@ -269,11 +269,16 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
                     fs::exists(options.golden) ? "not a folder" : "no such golden folder"));
   SuiteRun run;
   run.manifests = loadCatalog(options.shaders);
-  for (Case& c : expandCases(run.manifests, options.filter))
-    if (!onlyImageCases || c.spec.has("image")) run.cases.push_back(std::move(c));
+  std::vector<std::string> notImageCases;
+  for (Case& c : expandCases(run.manifests, options.filter)) {
+    if (!onlyImageCases || c.spec.has("image"))
+      run.cases.push_back(std::move(c));
+    else
+      notImageCases.push_back(c.id);
+  }
   if (run.cases.empty())
-    throw UsageError(
-        noCaseMatchesMessage(run.manifests, options.filter, onlyImageCases ? "image " : ""));
+    throw UsageError(noCaseMatchesMessage(run.manifests, options.filter,
+                                          onlyImageCases ? "image " : "", notImageCases));
   std::optional<Shard> shard;
   if (!options.shard.empty()) shard = parseShard(options.shard);
   // Validating the cases (a derived oracle parses its listing) and asking

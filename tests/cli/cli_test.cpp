@@ -404,7 +404,14 @@ TEST(Cli, ListFilterMatchingNothingIsExit2) {
            {"run --filter 'orange-book/14.1-fresnel'", "use --filter 'orange-book/14.1-fresnel/*'"},
            {"bless --filter 'orange-book/14.1-fresnel' --golden /tmp",
             "no image case matches --filter 'orange-book/14.1-fresnel', which is listing "
-            "orange-book/14.1-fresnel's id"}}) {
+            "orange-book/14.1-fresnel's id"},
+           // Cases that match but have no image check are the reason, not
+           // the filter (which `cs381/chromatic-aberration/*` would not mend).
+           {"bless --filter 'cs381/*' --golden /tmp",
+            "no image case matches --filter 'cs381/*': the 9 case(s) it matches "
+            "(cs381/chromatic-aberration/sphere and 8 more) are not image cases"},
+           {"bless --filter 'cs381/glass' --golden /tmp",
+            "which is listing cs381/glass's id, and none of its cases is an image case"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
