@@ -143,11 +143,27 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
                         file.path, r.caseId));
       const auto [it, added] =
           merged.emplace(std::pair(r.backend, order->second), std::pair(&r, &file.path));
-      if (!added)
+      if (!added) {
+        // Shards of two runs (another --filter or --backend list, or
+        // another shard count) overlap where their selections do: that is
+        // the mistake to name, not the overlap.
+        const CaseResult& other = *it->second.first;
+        if (!r.shardOf.empty() && !other.shardOf.empty() && !r.shard.empty() &&
+            !other.shard.empty() &&
+            (r.shardOf != other.shardOf ||
+             parseShard(r.shard).count != parseShard(other.shard).count))
+          throw UsageError(fmt::format(
+              "{} holds shard {} of the run of {}, and {} shard {} of the run of {}: a merge "
+              "joins the shards of one run (these two both hold {} on {}); merge each run's "
+              "shards apart, or run the missing shards with the same --filter, --backend and "
+              "--shard count",
+              *it->second.second, other.shard, other.shardOf, file.path, r.shard, r.shardOf,
+              r.caseId, r.backend));
         throw UsageError(
             fmt::format("{} and {} both hold {} on {}: shards must not overlap; "
                         "merge the results of one run's shards only",
                         *it->second.second, file.path, r.caseId, r.backend));
+      }
     }
   requireEveryShard(files);
   std::vector<CaseResult> results;

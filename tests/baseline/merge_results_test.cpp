@@ -120,6 +120,31 @@ TEST(MergeResults, AShardOfAnotherRunDoesNotStandForAMissingOne) {
   EXPECT_EQ(mixed.size(), 3u);
 }
 
+// A shard of a run with another --filter that holds a case this run's
+// shards hold too is named as a shard of another run, not as an overlap
+// (which reads as one shard given twice).
+TEST(MergeResults, AShardOfAnotherRunThatOverlapsIsNamedAsSuch) {
+  const std::vector<Case> catalog = {imageCase("a", false), imageCase("b", false)};
+  const auto of = [](CaseResult r, const char* shard, const char* run) {
+    r.shard = shard;
+    r.shardOf = run;
+    return r;
+  };
+  try {
+    mergeResults({{"s1.jsonl", {of(result("a", "gl"), "1/2", "--filter '*' --backend gl")}},
+                  {"s2.jsonl", {of(result("b", "gl"), "2/2", "--filter '*' --backend gl")}},
+                  {"f.jsonl", {of(result("b", "gl"), "2/2", "--filter 'b' --backend gl")}}},
+                 catalog);
+    ADD_FAILURE() << "merged shards of two runs";
+  } catch (const UsageError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("s2.jsonl holds shard 2/2 of the run of --filter '*' --backend gl, "
+                           "and f.jsonl shard 2/2 of the run of --filter 'b' --backend gl"),
+              std::string::npos)
+        << message;
+  }
+}
+
 // Shards of two driver builds under one backend would be credited to one
 // of them: refused, naming both files and both builds. A record that names
 // no driver (a worker that died first) joins any; other backends may differ.
