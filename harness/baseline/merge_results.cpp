@@ -10,6 +10,7 @@
 #include "baseline/driver_build.h"
 #include "baseline/shard.h"
 #include "core/errors.h"
+#include "core/listing_digest.h"
 
 namespace snell {
 namespace {
@@ -122,6 +123,7 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
   for (const Case& c : catalog) caseOrder.emplace(c.id, caseOrder.size());
   std::map<std::pair<std::string, std::size_t>, std::pair<const CaseResult*, const std::string*>>
       merged;
+  std::map<const Manifest*, std::string> digestOf;  // of the catalog's listings, once each
   // The first record of each backend that names its driver, and its file.
   std::map<std::string, std::pair<const CaseResult*, const std::string*>> driverOf;
   for (const ResultsFile& file : files)
@@ -141,6 +143,20 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
             fmt::format("{}: case {} is not in the catalog; pass the --shaders "
                         "folder the run used",
                         file.path, r.caseId));
+      // A shard run on another catalog (an edited listing, another
+      // commit's) is not a shard of this run, whose other cases ran on
+      // these listings.
+      if (const Manifest* listing = catalog[order->second].manifest;
+          listing && !r.listingDigest.empty()) {
+        auto [digest, fresh] = digestOf.try_emplace(listing);
+        if (fresh) digest->second = listingDigest(*listing);
+        if (digest->second != r.listingDigest)
+          throw UsageError(fmt::format(
+              "{}: ran {} on {} from another text of its listing than {} and its shader files "
+              "(a shard of another commit, or a listing edited since): merge the shards of one "
+              "run, with --shaders the catalog they ran",
+              file.path, r.caseId, r.backend, listing->path.string()));
+      }
       const auto [it, added] =
           merged.emplace(std::pair(r.backend, order->second), std::pair(&r, &file.path));
       if (!added) {

@@ -28,6 +28,7 @@
 #include "compare/image_library.h"
 #include "core/atomic_file.h"
 #include "core/errors.h"
+#include "core/listing_digest.h"
 #include "core/message.h"
 #include "core/scene_file.h"
 #include "runner/backend_probe.h"
@@ -438,6 +439,11 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::size_t finished = slots.size() - tasks.size();
   std::map<std::string, const Case*> caseById;
   for (const Case& c : run.cases) caseById[c.id] = &c;
+  // Each record says which listing text it ran (a merge tells a shard run
+  // on another catalog by it): read once per listing.
+  std::map<const Manifest*, std::string> digestOf;
+  for (const Case& c : run.cases)
+    if (!digestOf.count(c.manifest)) digestOf[c.manifest] = listingDigest(*c.manifest);
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
     CaseResult result = finishedCase;
@@ -457,6 +463,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     result.shard = shardLabel;
     result.shardOf = shardOf;
     result.shardCases = shardCases;
+    if (const auto c = caseById.find(result.caseId); c != caseById.end())
+      result.listingDigest = digestOf.at(c->second->manifest);
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                  result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(jsonText(toJson(result)));

@@ -51,6 +51,10 @@ struct CaseResult {
   // skipped on every backend), so that a merge can tell whether a shard
   // none of its inputs holds had cases to give.
   std::vector<std::size_t> shardCases;
+  // The digest of the listing as it ran (core/listing_digest.h), so that a
+  // merge can tell a shard run on another catalog; empty in records written
+  // before records carried it.
+  std::string listingDigest;
 
   // One vector (or scalar) per captured output per vertex.
   std::size_t vectorsChecked() const { return vertices * varyings.size(); }

@@ -72,6 +72,7 @@ nlohmann::json toJson(const CaseResult& r) {
   if (!r.shard.empty()) record["shard"] = r.shard;
   if (!r.shardOf.empty()) record["shard_of"] = r.shardOf;
   if (!r.shardCases.empty()) record["shard_cases"] = r.shardCases;
+  if (!r.listingDigest.empty()) record["listing_digest"] = r.listingDigest;
   for (const auto& kind : checkKinds()) kind->writeJson(r, record);
   return record;
 }
@@ -106,6 +107,8 @@ CaseResult caseResultFromJson(const nlohmann::json& j) {
   if (j.contains("shard")) r.shard = field<std::string>(j, "shard");
   // Absent from records written before shards named their selection.
   if (j.contains("shard_of")) r.shardOf = field<std::string>(j, "shard_of");
+  // Absent from records written before records carried it.
+  if (j.contains("listing_digest")) r.listingDigest = field<std::string>(j, "listing_digest");
   // Absent from records written before shards counted each other's cases.
   if (j.contains("shard_cases")) {
     const nlohmann::json& counts = j.at("shard_cases");

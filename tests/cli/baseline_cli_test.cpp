@@ -287,6 +287,43 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
   EXPECT_FALSE(fs::exists(scratch / "broken.jsonl"));
 }
 
+// A shard run on another text of a listing (edited since, another
+// commit's) did not run what the other shards ran: the merge refuses it,
+// naming the file, the case and the listing.
+TEST(BaselineCli, AShardRunOnAnotherTextOfAListingIsRefused) {
+  Scratch scratch;
+  const fs::path shaders = scratch / "shaders";
+  fs::create_directories(shaders);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  const auto shard = [&](const std::string& which, const std::string& file) {
+    const Outcome o = snell(fmt::format(
+        "run --shaders {} --filter '*/s[wt]*' --backend gl --shard {} --out {} --json {}",
+        shaders.string(), which, (scratch / "out").string(), (scratch / file).string()));
+    ASSERT_EQ(o.code, 0) << o.out;
+  };
+  const auto merge = [&](const std::string& second) {
+    return snell(fmt::format("merge {} {} --shaders {} --json {}", (scratch / "s1.jsonl").string(),
+                             (scratch / second).string(), shaders.string(),
+                             (scratch / "merged.jsonl").string()));
+  };
+  shard("1/2", "s1.jsonl");
+  shard("2/2", "s2.jsonl");
+  const Outcome same = merge("s2.jsonl");
+  EXPECT_EQ(same.code, 0) << same.out;
+  // The vertex stage gains a comment: the same shader to a driver, another
+  // text to a merge, which cannot tell what else changed.
+  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
+  shard("2/2", "s2-edited.jsonl");
+  fs::remove(scratch / "merged.jsonl");
+  const Outcome mixed = merge("s2-edited.jsonl");
+  EXPECT_EQ(mixed.code, 2) << mixed.out;
+  EXPECT_NE(mixed.out.find((scratch / "s1.jsonl").string() + ": ran orange-book/14.1-fresnel/"),
+            std::string::npos)
+      << mixed.out;
+  EXPECT_NE(mixed.out.find("from another text of its listing"), std::string::npos) << mixed.out;
+  EXPECT_FALSE(fs::exists(scratch / "merged.jsonl"));
+}
+
 std::size_t lineCount(const fs::path& path) {
   std::ifstream in(path);
   std::size_t n = 0;
