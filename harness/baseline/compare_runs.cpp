@@ -73,6 +73,9 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
       continue;
     }
     const CaseResult& now = *it->second;
+    if (!old->listingDigest.empty() && !now.listingDigest.empty() &&
+        old->listingDigest != now.listingDigest)
+      c.listingEdited.push_back(key);
     // A flake passes the gate in `run` and `merge`: judged here by the same
     // status, and listed apart.
     const Status was = old->gateStatus(), is = now.gateStatus();
@@ -110,13 +113,16 @@ void printComparison(std::ostream& out, const RunComparison& c, const DriftRule&
   fmt::print(out,
              "{} -> {}: {} regressions, {} fixes, {} changes, {} flakes, {} new, {} removed, {}"
              "{} drifted (grew more than {}x), {} with the same status to the gate (drifted ones "
-             "included, and flakes that passed before)\n",
+             "included, and flakes that passed before){}\n",
              c.from, c.to, c.regressions.size(), c.fixes.size(), c.changes.size(), c.flakes.size(),
              c.added.size(), c.removed.size(),
              c.notReached.empty() ? std::string()
                                   : fmt::format("{} not reached (the later run was interrupted), ",
                                                 c.notReached.size()),
-             c.drift.size(), rule.factor, c.unchanged);
+             c.drift.size(), rule.factor, c.unchanged,
+             c.listingEdited.empty()
+                 ? std::string()
+                 : fmt::format("; {} ran another text of their listing", c.listingEdited.size()));
   for (const auto& [word, list] : {std::pair{"regression", &c.regressions},
                                    std::pair{"fix", &c.fixes}, std::pair{"change", &c.changes}})
     for (const StatusChange& s : *list)
@@ -131,6 +137,10 @@ void printComparison(std::ostream& out, const RunComparison& c, const DriftRule&
   for (const Drift& d : c.drift)
     fmt::print(out, "  {:<10}  {}: {} {} -> {}{}\n", "drift", d.key, d.metric, number(d.from),
                number(d.to), d.from > 0 ? fmt::format(" (x{:.1f})", d.to / d.from) : "");
+  for (const std::string& key : c.listingEdited)
+    fmt::print(out,
+               "  {:<10}  {}: its listing's manifest or shader files differ between the runs\n",
+               "edited", key);
 }
 
 nlohmann::json comparisonToJson(const RunComparison& c) {
@@ -150,6 +160,7 @@ nlohmann::json comparisonToJson(const RunComparison& c) {
           {"removed", c.removed},
           {"not_reached", c.notReached},
           {"drift", drift},
+          {"listing_edited", c.listingEdited},
           {"unchanged", c.unchanged}};
 }
 

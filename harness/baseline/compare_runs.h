@@ -54,6 +54,10 @@ struct RunComparison {
   std::vector<StatusChange> flakes;
   std::vector<std::string> added, removed;  // piglit's "new" and "removed"
   std::vector<std::string> notReached;      // lacking from an interrupted later run
+  // Results whose listing's text (listing_digest) differs between the runs:
+  // a shader author's edit, to which a change of status may be owed rather
+  // than to the driver.
+  std::vector<std::string> listingEdited;
   std::vector<Drift> drift;
   std::size_t unchanged = 0;
 };

@@ -189,6 +189,29 @@ TEST(CompareRuns, GoldenAndOtherBackendImageErrorsDrift) {
   EXPECT_EQ(c.drift[1].from, 1e-5);
 }
 
+// A result whose listing's text changed between the runs is named, so
+// that a change of status can be laid at the shader's edit, not the
+// driver's; records from before the digest say nothing either way.
+TEST(CompareRuns, AListingEditedBetweenRunsIsNamed) {
+  const auto ran = [](const std::string& id, const std::string& digest) {
+    CaseResult r = result(id, "gl", Status::Pass);
+    r.listingDigest = digest;
+    return r;
+  };
+  const RunComparison c = compareRuns(
+      side("a.jsonl", {ran("edited", "1"), ran("same", "2"), ran("old", "")}),
+      side("b.jsonl", {ran("edited", "3"), ran("same", "2"), ran("old", "4")}), DriftRule{});
+  EXPECT_EQ(c.listingEdited, (std::vector<std::string>{"gl edited"}));
+  std::ostringstream text;
+  printComparison(text, c, DriftRule{});
+  EXPECT_NE(text.str().find("; 1 ran another text of their listing"), std::string::npos)
+      << text.str();
+  EXPECT_NE(text.str().find("edited      gl edited: its listing's manifest or shader files"),
+            std::string::npos)
+      << text.str();
+  EXPECT_EQ(comparisonToJson(c)["listing_edited"], nlohmann::json::array({"gl edited"}));
+}
+
 TEST(CompareRuns, BackendHalvesCompareCaseByCase) {
   const RunSide run = side(
       "r.jsonl", {result("x", "gl", Status::Pass), result("x", "vk", Status::CompatibilityWarning),
