@@ -26,6 +26,7 @@ std::map<std::string, const CaseResult*> keyed(const RunSide& side, bool byCase)
 std::map<std::string, double> imageErrors(const CaseResult& r) {
   std::map<std::string, double> errors;
   for (const ImageComparison& c : r.images) {
+    if (!c.problem.empty()) continue;  // not made (sizes differ, an image missing): no error
     const auto [it, fresh] = errors.emplace(c.against, c.maxError);
     if (!fresh) it->second = std::max(it->second, c.maxError);
   }

@@ -353,6 +353,12 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
           }))
         ++shardCases[k % shard->count];
   }
+  // Each record says which listing text it ran (a merge tells a shard run
+  // on another catalog by it, a resumed run an edited listing): read once
+  // per listing.
+  std::map<const Manifest*, std::string> digestOf;
+  for (const Case& c : run.cases)
+    if (!digestOf.count(c.manifest)) digestOf[c.manifest] = listingDigest(*c.manifest);
   // One slot per result the run gives, in order: a case already finished in
   // the resumed file keeps its result; the others become tasks.
   std::vector<Task> tasks;
@@ -366,7 +372,18 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
         run.skipped.push_back({backend, c.id, skip});
         continue;
       }
-      const auto done = resumed.find(backend + " " + c.id);
+      auto done = resumed.find(backend + " " + c.id);
+      // A finished case that ran another text of its listing (edited since)
+      // is run again: its result is not this listing's.
+      if (done != resumed.end() && !done->second.listingDigest.empty() &&
+          done->second.listingDigest != digestOf.at(c.manifest)) {
+        printMessage(stderr,
+                     "snell: note: {}: {} on {} ran another text of its listing, which has been "
+                     "edited since; it runs again\n",
+                     options.resume, c.id, backend);
+        resumed.erase(done);
+        done = resumed.end();
+      }
       if (done != resumed.end()) {
         // Its image is compared with the other backends' after the run.
         resumedImages = resumedImages || c.spec.has("image");
@@ -439,11 +456,6 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::size_t finished = slots.size() - tasks.size();
   std::map<std::string, const Case*> caseById;
   for (const Case& c : run.cases) caseById[c.id] = &c;
-  // Each record says which listing text it ran (a merge tells a shard run
-  // on another catalog by it): read once per listing.
-  std::map<const Manifest*, std::string> digestOf;
-  for (const Case& c : run.cases)
-    if (!digestOf.count(c.manifest)) digestOf[c.manifest] = listingDigest(*c.manifest);
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
     CaseResult result = finishedCase;

@@ -145,6 +145,29 @@ class Lowering {
   };
   int nesting_ = 0;
 
+  // While a ?: operand is lowered: the call depth of the ?: itself. GLSL
+  // evaluates the chosen operand only (GLSL 4.60 section 5.8), so an
+  // assignment or an out argument in an operand, at that depth, happens on
+  // one way only; the lowering evaluates both, and is refused there. Inside
+  // a function the operand calls, the callee's own variables are its own.
+  struct SelectionGuard {
+    SelectionGuard(std::vector<std::size_t>& depths, std::size_t depth) : depths_(depths) {
+      depths_.push_back(depth);
+    }
+    ~SelectionGuard() { depths_.pop_back(); }
+    SelectionGuard(const SelectionGuard&) = delete;
+    SelectionGuard& operator=(const SelectionGuard&) = delete;
+    std::vector<std::size_t>& depths_;
+  };
+  std::vector<std::size_t> selectionDepths_;
+
+  void refuseInsideSelection(const TIntermNode& node, const std::string& what) const {
+    if (!selectionDepths_.empty() && selectionDepths_.back() == callStack_.size())
+      refuse(node, fmt::format("{} inside ?: (only the chosen operand is evaluated, so it "
+                               "happens on one way only: write an if/else)",
+                               what));
+  }
+
   [[noreturn]] void refuse(const TIntermNode& node, const std::string& what) const {
     throw UsageError(builder_.unsupported(what, node.getLoc().line) + "; " + kAdvice);
   }
@@ -435,8 +458,10 @@ class Lowering {
       TIntermTyped* otherwise = selection->getFalseBlock()->getAsTyped();
       if (!then || !otherwise) refuse(node, "this ?: expression");
       const Value chosen = condition(*selection->getCondition());
-      return builder_.select(chosen, expression(*then), expression(*otherwise), line,
-                             refuser(node));
+      const SelectionGuard operands(selectionDepths_, callStack_.size());
+      const Value whenTrue = expression(*then);
+      const Value whenFalse = expression(*otherwise);
+      return builder_.select(chosen, whenTrue, whenFalse, line, refuser(node));
     }
     refuse(node, "this expression");
   }
@@ -617,12 +642,20 @@ class Lowering {
         const auto [key, name] = member(node);
         noteName(name, key, isBlockMember(node));
         auto found = variables_.find(key);
-        if (found == variables_.end() && node.getLeft()->getQualifier().storage == EvqUniform)
-          refuse(node,
-                 fmt::format("the uniform struct member {}.{} (snell sets uniforms of "
-                             "float, vec2-4, mat3 and mat4 types, not members of a struct: "
-                             "declare {} as a uniform of its own)",
-                             node.getLeft()->getAsSymbolNode()->getName().c_str(), name, name));
+        if (found == variables_.end() && node.getLeft()->getQualifier().storage == EvqUniform) {
+          // A block's members (`uniform Params { float eta; };`, named or
+          // not) are not a struct's; an anonymous block's name is glslang's.
+          const std::string holder = node.getLeft()->getAsSymbolNode()->getName().c_str();
+          const bool block = node.getLeft()->getType().getBasicType() == EbtBlock;
+          const std::string where =
+              block ? fmt::format("the uniform block member {}",
+                                  holder.rfind("anon@", 0) == 0 ? name : holder + "." + name)
+                    : fmt::format("the uniform struct member {}.{}", holder, name);
+          refuse(node, fmt::format("{} (snell sets uniforms of float, vec2-4, mat3 and mat4 "
+                                   "types, not members of a {}: declare {} as a uniform of its "
+                                   "own)",
+                                   where, block ? "block" : "struct", name));
+        }
         if (found == variables_.end())
           refuse(node, fmt::format("reading {} before it is assigned", name));
         return checkedRead(found->second, node);
@@ -649,6 +682,7 @@ class Lowering {
 
   Value assignment(TIntermBinary& node, int line) {
     using namespace glslang;
+    refuseInsideSelection(node, "an assignment");
     Value value = expression(*node.getRight());
     if (node.getOp() != EOpAssign) {
       const Value current = expression(*node.getLeft());
@@ -912,6 +946,13 @@ class Lowering {
     const auto storageOf = [&](std::size_t k) {
       return parameters[k]->getAsSymbolNode()->getQualifier().storage;
     };
+    const auto writesBack = [&](std::size_t k) {
+      return storageOf(k) == glslang::EvqOut || storageOf(k) == glslang::EvqInOut;
+    };
+    for (std::size_t k = 0; k < parameters.size(); ++k)
+      if (writesBack(k))
+        refuseInsideSelection(
+            node, fmt::format("a call of {}) with an out parameter", functionName(function)));
     // An out argument's value on the way in is not the callee's to read.
     std::vector<Value> args(arguments.size());
     for (std::size_t k = 0; k < arguments.size(); ++k)
@@ -920,10 +961,19 @@ class Lowering {
     // loop) is outside the subset; the call's value is refused, so a
     // fragment capture computed from it can still be read back and fed in.
     if (const TIntermNode* early = earlyReturn(function)) {
-      Value refused{shapeOf(node), {}, {}};
-      refused.refusal = builder_.unsupported(
+      const std::string refusal = builder_.unsupported(
           fmt::format("a return before the end of {})", functionName(function)),
           early->getLoc().line);
+      // Its out and inout arguments are as unknown as its value.
+      for (std::size_t k = 0; k < parameters.size(); ++k) {
+        if (!writesBack(k)) continue;
+        Value unknown{shapeOf(*arguments[k]->getAsTyped()), {}, {}};
+        unknown.refusal = refusal;
+        store(*arguments[k]->getAsTyped(), unknown);
+      }
+      Value refused{
+          node.getType().getBasicType() == glslang::EbtVoid ? Shape{} : shapeOf(node), {}, {}};
+      refused.refusal = refusal;
       return refused;
     }
     for (std::size_t k = 0; k < parameters.size(); ++k) {
@@ -943,7 +993,7 @@ class Lowering {
     inFunction_ = wasInFunction;
     callStack_.pop_back();
     for (std::size_t k = 0; k < parameters.size(); ++k) {
-      if (storageOf(k) != glslang::EvqOut && storageOf(k) != glslang::EvqInOut) continue;
+      if (!writesBack(k)) continue;
       TIntermSymbol& parameter = *parameters[k]->getAsSymbolNode();
       const auto value = variables_.find(symbolKey(parameter));
       if (value != variables_.end()) {

@@ -183,6 +183,11 @@ TEST(CompareRuns, GoldenAndOtherBackendImageErrorsDrift) {
                                                      {"other-backend:gl/gl:softpipe", 1.0}})});
   const RunComparison c = compareRuns(before, after, DriftRule{});
   ASSERT_EQ(c.drift.size(), 2u);
+  // A comparison the earlier run could not make (its max error 0, with a
+  // problem) is no baseline for drift.
+  CaseResult unmade = withImages({{"other-backend:gl/vk", 0.0}});
+  unmade.images[0].problem = "the images differ in size";
+  EXPECT_TRUE(compareRuns(side("a.jsonl", {unmade}), after, DriftRule{}).drift.empty());
   EXPECT_EQ(c.drift[0].metric, "image error vs golden");
   EXPECT_EQ(c.drift[0].to, 4e-3);
   EXPECT_EQ(c.drift[1].metric, "image error vs other-backend:gl/vk");

@@ -324,6 +324,35 @@ TEST(BaselineCli, AShardRunOnAnotherTextOfAListingIsRefused) {
   EXPECT_FALSE(fs::exists(scratch / "merged.jsonl"));
 }
 
+// A resumed run keeps the cases its interrupted run finished, but not one
+// that ran another text of its listing (edited since): that one runs
+// again, with a note.
+TEST(BaselineCli, AResumedCaseOfAnEditedListingRunsAgain) {
+  Scratch scratch;
+  const fs::path shaders = scratch / "shaders";
+  fs::create_directories(shaders);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  const std::string run = fmt::format("run --shaders {} --filter '*/s[wt]*' --backend gl --out {}",
+                                      shaders.string(), (scratch / "out").string());
+  const Outcome whole = snell(run + " --json " + (scratch / "whole.jsonl").string());
+  ASSERT_EQ(whole.code, 0) << whole.out;
+  // The run as if interrupted after its first case.
+  nlohmann::json first = records(scratch / "whole.jsonl").front();
+  first["incomplete"] = true;
+  std::ofstream(scratch / "cut.jsonl") << first.dump() << "\n";
+  const std::string id = first["case"];
+  const std::string resume = fmt::format(" --resume {} --json ", (scratch / "cut.jsonl").string());
+  const Outcome kept = snell(run + resume + (scratch / "kept.jsonl").string());
+  ASSERT_EQ(kept.code, 0) << kept.out;
+  EXPECT_EQ(kept.out.find("[1/2] gl " + id), std::string::npos) << kept.out;  // not run again
+  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
+  const Outcome edited = snell(run + resume + (scratch / "edited.jsonl").string());
+  ASSERT_EQ(edited.code, 0) << edited.out;
+  EXPECT_NE(edited.out.find(id + " on gl ran another text of its listing"), std::string::npos)
+      << edited.out;
+  EXPECT_NE(edited.out.find("gl " + id + " Pass"), std::string::npos) << edited.out;
+}
+
 std::size_t lineCount(const fs::path& path) {
   std::ifstream in(path);
   std::size_t n = 0;

@@ -165,6 +165,72 @@ void main() {
   EXPECT_TRUE(mentions(message, "user.vert:7: the uniform struct member L.k")) << message;
 }
 
+// A function with a return before its end is refused where its value is
+// needed; so are its out arguments, which it may have set on either way
+// (they kept their value from before the call).
+TEST(DerivedRefusal, TheOutArgumentsOfAnEarlyReturningCallAreRefused) {
+  const std::string message = refusalOf(R"(#version 330 core
+uniform float eta;
+out float t;
+float h(in float x, out float y) { if (x > 0.5) { y = 1.0; return 3.0; } y = 2.0; return 4.0; }
+void main() {
+  float y = 5.0;
+  float r = h(eta, y);
+  t = y;
+}
+)",
+                                        derived::Stage::Vertex, {"t"});
+  EXPECT_TRUE(mentions(message, "a return before the end of h()")) << message;
+}
+
+// GLSL evaluates only the chosen operand of ?:, so an out argument or an
+// assignment in an operand happens on one way only: refused, where the
+// lowering took both; a function called there keeps its own variables.
+TEST(DerivedRefusal, AnOutArgumentOrAnAssignmentInsideASelectionIsRefused) {
+  const std::string call = refusalOf(R"(#version 330 core
+uniform float eta;
+out float t;
+float h(in float x, out float y) { y = x * 2.0; return 1.0; }
+void main() {
+  float y = 5.0;
+  float r = (eta > 0.5) ? 0.0 : h(eta, y);
+  t = y + r;
+}
+)");
+  EXPECT_TRUE(mentions(call, "user.vert:7: a call of h() with an out parameter inside ?:")) << call;
+  const std::string assigned = refusalOf(R"(#version 330 core
+uniform float eta;
+out float t;
+void main() {
+  float y = 5.0;
+  float r = (eta > 0.5) ? (y = 1.0) : 2.0;
+  t = y + r;
+}
+)");
+  EXPECT_TRUE(mentions(assigned, "user.vert:6: an assignment inside ?:")) << assigned;
+  EXPECT_EQ(refusalOf(R"(#version 330 core
+uniform float eta;
+out float t;
+float twice(in float x) { float y = x; y *= 2.0; return y; }
+void main() {
+  t = (eta > 0.5) ? twice(eta) : 2.0;
+}
+)"),
+            "");
+}
+
+TEST(DerivedRefusal, AUniformBlockMemberIsNamedAsOne) {
+  const std::string anonymous = refusalOf(R"(#version 330 core
+uniform Params { float eta; };
+out float t;
+void main() {
+  t = eta * 2.0;
+}
+)");
+  EXPECT_TRUE(mentions(anonymous, "user.vert:5: the uniform block member eta (")) << anonymous;
+  EXPECT_FALSE(mentions(anonymous, "anon@")) << anonymous;
+}
+
 // An unsupported built-in is named, so that a line calling two says which.
 TEST(DerivedRefusal, AnUnsupportedBuiltInIsNamed) {
   const std::string message = refusalOf(R"(#version 330 core
