@@ -59,12 +59,11 @@ void requireImagesToCompare(const std::vector<BackendPair>& pairs,
             image.string(), error.what(), id, pair.a->backend, pair.b->backend));
       }
     };
-    readable(maskImagePath(out, id));
-    const std::filesystem::path referencePath = out / id / "reference.exr";
+    const std::vector<bool> masked = maskFlags(readable(maskImagePath(out, id)));
+    const std::filesystem::path referencePath = referenceImagePath(out, id);
     const std::optional<Image> reference = std::filesystem::is_regular_file(referencePath)
                                                ? std::optional<Image>(readable(referencePath))
                                                : std::nullopt;
-    const std::vector<bool> masked = maskFlags(maskImagePath(out, id));
     for (const CaseResult* record : {pair.a, pair.b}) {
       const std::filesystem::path path = renderedImagePath(out, id, record->backend);
       const Image rendered = readable(path);

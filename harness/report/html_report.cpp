@@ -28,6 +28,7 @@
 #include "report/slack_histogram_chart.h"
 #include "report/sweep_findings.h"
 #include "runner/cross_api_check.h"
+#include "runner/image_check.h"
 
 namespace snell {
 namespace {
@@ -491,9 +492,9 @@ class ReportBuilder {
     page.fields.set("title", any.title);
     page.fields.set("source", fmt::format("{} ({})", any.sourceWhere, any.sourceFile));
     const fs::path dir = options_.imagesDir / id;
-    const std::vector<bool> masked = maskFlags(dir / "mask.exr");
+    const std::vector<bool> masked = maskFlags(maskImagePath(options_.imagesDir, id));
     const double fail = failThreshold(id);
-    const Image* reference = image(dir / "reference.exr");
+    const Image* reference = image(referenceImagePath(options_.imagesDir, id));
     bool referenceShown = false;
     std::set<std::string> notThisRuns;  // backends whose images there are another run's
     for (const auto& [column, r] : byCase_.at(id)) {

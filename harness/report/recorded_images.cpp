@@ -9,10 +9,12 @@
 namespace snell {
 
 std::vector<bool> maskFlags(const std::filesystem::path& maskFile) {
-  std::vector<bool> flags;
-  if (!std::filesystem::exists(maskFile)) return flags;
-  const Image mask = readImage(maskFile);
-  flags.resize(static_cast<std::size_t>(mask.width) * mask.height);
+  if (!std::filesystem::exists(maskFile)) return {};
+  return maskFlags(readImage(maskFile));
+}
+
+std::vector<bool> maskFlags(const Image& mask) {
+  std::vector<bool> flags(static_cast<std::size_t>(mask.width) * mask.height);
   for (std::size_t p = 0; p < flags.size(); ++p) flags[p] = mask.pixels[p * 4] != 0;
   return flags;
 }

@@ -16,6 +16,8 @@ namespace snell {
 // One flag per pixel of OUT/CASE/mask.exr (row 0 at the top); empty when
 // there is no mask.
 std::vector<bool> maskFlags(const std::filesystem::path& maskFile);
+// The same from the mask image already read.
+std::vector<bool> maskFlags(const Image& mask);
 
 struct UnrecordedDifference {
   double there = 0;     // the images' largest difference from the reference

@@ -44,6 +44,10 @@ fs::path maskImagePath(const fs::path& outDir, const std::string& caseId) {
   return outDir / caseId / "mask.exr";
 }
 
+fs::path referenceImagePath(const fs::path& outDir, const std::string& caseId) {
+  return outDir / caseId / "reference.exr";
+}
+
 Image maskAsImage(const ReferenceImage& reference) {
   Image image(reference.color.width, reference.color.height);
   for (std::size_t p = 0; p < reference.mask.size(); ++p)
@@ -99,7 +103,7 @@ void writeReferenceImages(const fs::path& outDir, const std::string& caseId,
   const PhaseScope phase(Phase::Images);
   const fs::path dir = outDir / caseId;
   fs::create_directories(dir);
-  writeImageAtomically(dir / "reference.exr", reference.color);
+  writeImageAtomically(referenceImagePath(outDir, caseId), reference.color);
   writeImageAtomically(dir / "reference.png", reference.color);
   writeImageAtomically(maskImagePath(outDir, caseId), maskAsImage(reference));
   writeDifferenceHeatMap(dir / "mask.png", reference.color, reference.color, reference.mask, 1.0);

@@ -62,6 +62,9 @@ std::filesystem::path heatMapPath(const std::filesystem::path& outDir, const std
 
 // The reference's mask travels between processes as an EXR (mask value in red).
 std::filesystem::path maskImagePath(const std::filesystem::path& outDir, const std::string& caseId);
+// The CPU reference image of a case, beside its rendered images.
+std::filesystem::path referenceImagePath(const std::filesystem::path& outDir,
+                                         const std::string& caseId);
 Image maskAsImage(const ReferenceImage& reference);
 std::vector<PixelMask> maskFromImage(const Image& image);
 

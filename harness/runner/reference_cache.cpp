@@ -83,7 +83,7 @@ ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
                                              const ResolvedBindings& bindings) {
   const fs::path dir = outDir_ / c.id;
   fs::create_directories(dir);
-  const fs::path color = dir / "reference.exr", mask = maskImagePath(outDir_, c.id),
+  const fs::path color = referenceImagePath(outDir_, c.id), mask = maskImagePath(outDir_, c.id),
                  owner = dir / "reference.run";
   const FileLock lock(dir / "reference.lock");
   const bool sharedThisRun = readWholeFile(owner).value_or("") == runId_;

@@ -7,12 +7,12 @@
 #include <cmath>
 #include <fstream>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <set>
 #include <string_view>
 #include <system_error>
 
+#include "oracle/physics/interface_angles.h"
 #include "report/gnuplot_batch.h"
 #include "report/sweep_findings.h"
 #include "sweep/chart_series.h"
@@ -223,7 +223,12 @@ void addMethodErrorChart(GnuplotBatch& batch, std::vector<fs::path>& written,
     bySide[s.eta][s.method] += fmt::format("{:.10g} {:.10g}\n", s.angleDegrees, s.error());
   }
   if (bySide.empty()) return;
-  std::vector<std::string> plots;  // one per column
+  // One column per side: its title, the dotted critical angle where there
+  // is one (gnuplot's arrows carry over from panel to panel), its plot.
+  struct Column {
+    std::string title, critical, plot;
+  };
+  std::vector<Column> columns;
   for (const auto& [eta, methods] : bySide) {
     std::vector<std::string> names, rows;
     for (const auto& [method, data] : methods) {
@@ -242,42 +247,33 @@ void addMethodErrorChart(GnuplotBatch& batch, std::vector<fs::path>& written,
       plot += fmt::format("{}'{}' using 1:2 {} title '{}'", k ? ", " : "", file,
                           methodLine(names[k]), title);
     }
-    plots.push_back(plot + "\n");
+    Column column{fmt::format("n1 < n2 (eta {:.4g}): into the denser medium", eta),
+                  "unset arrow 3\n", plot + "\n"};
+    if (eta > 1) {
+      const double critical = physics::criticalAngleDegrees(eta, 1.0);
+      column.title = fmt::format(
+          "n1 > n2 (eta {:.4g}): total internal reflection past {:.4g} (dotted)", eta, critical);
+      column.critical =
+          fmt::format("set arrow 3 from {0},graph 0 to {0},graph 1 nohead dt 3\n", critical);
+    }
+    columns.push_back(column);
   }
-  const auto columnTitle = [](double eta) {
-    if (eta < 1) return fmt::format("n1 < n2 (eta {:.4g}): into the denser medium", eta);
-    return fmt::format("n1 > n2 (eta {:.4g}): total internal reflection past {:.4g} (dotted)", eta,
-                       std::asin(1 / eta) * 180 / std::numbers::pi);
-  };
   std::string body = fmt::format(
       "set xlabel 'incidence angle (degrees)'\nset xrange [0:90]\nset grid\nset ylabel "
       "'error'\nset arrow 1 from 0,{0} to 90,{0} nohead dt 2\n"
       "set arrow 2 from 0,-{0} to 90,-{0} nohead dt 2\n"
       "set multiplot layout 2,{1} title 'Fresnel methods: reflectance minus exact Fresnel (the "
       "bound {0}: dashed black){2}'\n",
-      kMethodErrorBound, plots.size(),
+      kMethodErrorBound, columns.size(),
       exactIsZero ? "; exact Fresnel in double is the reference, 0 throughout, not drawn" : "");
-  std::size_t column = 0;
-  for (const auto& [eta, methods] : bySide) {
-    const std::string critical =
-        eta > 1 ? fmt::format("set arrow 3 from {0},graph 0 to {0},graph 1 nohead dt 3\n",
-                              std::asin(1 / eta) * 180 / std::numbers::pi)
-                : "unset arrow 3\n";
+  for (const Column& column : columns)
     body += fmt::format("set title '{}'\nset yrange [*:*]\nset key bottom left opaque box\n{}{}",
-                        columnTitle(eta), critical, plots[column++]);
-  }
-  column = 0;
-  for (const auto& [eta, methods] : bySide) {
-    const std::string critical =
-        eta > 1 ? fmt::format("set arrow 3 from {0},graph 0 to {0},graph 1 nohead dt 3\n",
-                              std::asin(1 / eta) * 180 / std::numbers::pi)
-                : "unset arrow 3\n";
+                        column.title, column.critical, column.plot);
+  for (const Column& column : columns)
     body += fmt::format(
-        "set title 'the same, near the bound ({:.4g} to {:.4g})'\nset yrange "
-        "[{:.4g}:{:.4g}]\nunset key\n{}{}",
-        -5 * kMethodErrorBound, 5 * kMethodErrorBound, -5 * kMethodErrorBound,
-        5 * kMethodErrorBound, critical, plots[column++]);
-  }
+        "set title 'the same, near the bound ({0:.4g} to {1:.4g})'\nset yrange "
+        "[{0:.4g}:{1:.4g}]\nunset key\n{2}{3}",
+        -5 * kMethodErrorBound, 5 * kMethodErrorBound, column.critical, column.plot);
   addChartBody(batch, written, outDir, "sweep-method-error", body + "unset multiplot\n", 1100, 820);
 }
 

@@ -173,6 +173,15 @@ TEST(BaselineCli, TheShippedSoftpipeExpectationsHoldForTheWholeCatalog) {
       << o.out;
 }
 
+// A catalog of Listing 14.1 alone, in scratch/shaders (fresnel/), for tests
+// that edit a listing or interrupt a run.
+fs::path fresnelCatalogIn(const Scratch& scratch) {
+  const fs::path shaders = scratch / "shaders";
+  fs::create_directories(shaders);
+  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  return shaders;
+}
+
 // Results with the timings taken out: what must match between runs.
 std::vector<nlohmann::json> withoutTimings(std::vector<nlohmann::json> results) {
   for (nlohmann::json& r : results)
@@ -292,9 +301,7 @@ TEST(BaselineCli, ShardsAndBackendJobsMergedEqualOneUnshardedRun) {
 // naming the file, the case and the listing.
 TEST(BaselineCli, AShardRunOnAnotherTextOfAListingIsRefused) {
   Scratch scratch;
-  const fs::path shaders = scratch / "shaders";
-  fs::create_directories(shaders);
-  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  const fs::path shaders = fresnelCatalogIn(scratch);
   const auto shard = [&](const std::string& which, const std::string& file) {
     const Outcome o = snell(fmt::format(
         "run --shaders {} --filter '*/s[wt]*' --backend gl --shard {} --out {} --json {}",
@@ -329,9 +336,7 @@ TEST(BaselineCli, AShardRunOnAnotherTextOfAListingIsRefused) {
 // again, with a note.
 TEST(BaselineCli, AResumedCaseOfAnEditedListingRunsAgain) {
   Scratch scratch;
-  const fs::path shaders = scratch / "shaders";
-  fs::create_directories(shaders);
-  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  const fs::path shaders = fresnelCatalogIn(scratch);
   const std::string run = fmt::format("run --shaders {} --filter '*/s[wt]*' --backend gl --out {}",
                                       shaders.string(), (scratch / "out").string());
   const Outcome whole = snell(run + " --json " + (scratch / "whole.jsonl").string());
@@ -368,9 +373,7 @@ constexpr const char* kThreeFresnelCases = "*/[st][pwo]*";
 // written and marked incomplete, exit 130; --resume runs only the rest.
 TEST(BaselineCli, InterruptedRunWritesWhatFinishedAndResumes) {
   Scratch scratch;
-  const fs::path shaders = scratch / "shaders";
-  fs::create_directories(shaders);
-  fs::copy(SNELL_SOURCE_ROOT "/shaders/orange-book/14.1-fresnel", shaders / "fresnel");
+  const fs::path shaders = fresnelCatalogIn(scratch);
   fs::copy(SNELL_SOURCE_ROOT "/tests/faults/endless-loop", shaders / "endless-loop");
   const fs::path json = scratch / "r.jsonl";
   // Two workers: one hangs in the endless listing, the other finishes the
