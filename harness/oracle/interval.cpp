@@ -87,15 +87,30 @@ double errUnlessOverflowed(double idealLo, double idealHi, double err) {
   return maxAbs(idealLo, idealHi) + err > kFp32Max ? kInf : err;
 }
 
+// An operation's result from its float set (0 already admitted where a
+// flush may give it), its ideal range and the bound on its error before
+// its last rounding.
+void writeResult(Interval& r, Range set, Range ideal, double pending) {
+  r.lo = set.lo;
+  r.hi = set.hi;
+  r.idealLo = ideal.lo;
+  r.idealHi = ideal.hi;
+  r.err = errUnlessOverflowed(
+      ideal.lo, ideal.hi,
+      pending + float_sets::roundingError(ideal.lo - pending, ideal.hi + pending));
+}
+
 enum class RegionOp { Add, Multiply };
 
 // a + b or a * b: the ideal range, the region of every regrouping with the
 // operands' own open regions, and the floats that can come out of it.
 // Written into `r`, a default Interval that is neither operand: the callers
 // return it by name, so it is built in place instead of copied out whole.
-// Flattened: GCC at -O2 kept closedParts, exactProductRange, pendingError
-// and roundedAround as calls, a tenth of an operation's instructions.
-[[gnu::flatten]] void combineInto(Interval& r, const Interval& a, const Interval& b, RegionOp op) {
+// One instance per operation, inlined into its operator (which is
+// flattened: GCC at -O2 kept closedParts, exactProductRange, pendingError
+// and roundedAround as calls, a tenth of an operation's instructions).
+template <RegionOp op>
+[[gnu::always_inline]] inline void combineInto(Interval& r, const Interval& a, const Interval& b) {
   if (a.undefined || b.undefined || !std::isfinite(a.err) || !std::isfinite(b.err)) {
     r = Interval::unconstrained();
     return;
@@ -153,16 +168,39 @@ enum class RegionOp { Add, Multiply };
     r = Interval::unconstrained();
     return;
   }
-  set = float_sets::admitFlushToZero(set);
-  r.lo = set.lo;
-  r.hi = set.hi;
-  r.idealLo = ideal.lo;
-  r.idealHi = ideal.hi;
-  r.err = errUnlessOverflowed(
-      ideal.lo, ideal.hi,
-      pending + float_sets::roundingError(ideal.lo - pending, ideal.hi + pending));
+  writeResult(r, float_sets::admitFlushToZero(set), ideal, pending);
   if (a.constant && b.constant)
     addFold(r, op == RegionOp::Add ? a.folded + b.folded : a.folded * b.folded);
+}
+
+// A float as it is, exactly: a leaf with no error whose set and ideal range
+// are one finite float (an input or a uniform, not a literal). closedParts
+// gives such a value's own bounds and a fresh leaf region, under either
+// rules.
+bool isExactPoint(const Interval& v) {
+  const std::uint64_t bits = fp32_bits::bitsOf(v.lo);
+  return v.region.kind == IntervalRegion::Kind::Leaf && !v.undefined && !v.constant &&
+         v.err == 0.0 && bits == fp32_bits::bitsOf(v.hi) && bits == fp32_bits::bitsOf(v.idealLo) &&
+         bits == fp32_bits::bitsOf(v.idealHi) && std::fabs(v.lo) <= kFp32Max;
+}
+
+// combineInto's product for two exact points, the same bits by a shorter
+// road. Of its steps: one exact product; no overflow inside (one
+// operation); and the set is the plain interval, because pending >= 0 puts
+// the set rounded around the ideal value at or outside the plain one, and
+// their intersection is the plain one's bounds themselves. Checked against
+// the general road (IntervalShortcut.APointProductTakesTheGeneralRoadsBits).
+void exactPointProductInto(Interval& r, const Interval& a, const Interval& b) {
+  const double x = a.lo;
+  const double y = b.lo;
+  r.region =
+      productRegion(leafRegion(std::fabs(x), 0.0, false), leafRegion(std::fabs(y), 0.0, false));
+  const Range ideal = float_sets::exactProductRange(x, x, y, y);
+  const double pending = pendingError(r.region, currentPrecisionRules());
+  writeResult(r,
+              float_sets::admitFlushToZero(
+                  {fp32_bits::floatAtOrBelow(ideal.lo), fp32_bits::floatAtOrAbove(ideal.hi)}),
+              ideal, pending);
 }
 
 }  // namespace
@@ -249,9 +287,9 @@ Interval Interval::unconstrained() {
   return r;
 }
 
-Interval operator+(const Interval& a, const Interval& b) {
+[[gnu::flatten]] Interval operator+(const Interval& a, const Interval& b) {
   Interval r;
-  combineInto(r, a, b, RegionOp::Add);
+  combineInto<RegionOp::Add>(r, a, b);
   return r;
 }
 
@@ -267,9 +305,12 @@ Interval operator-(const Interval& a) {
 
 Interval operator-(const Interval& a, const Interval& b) { return a + (-b); }
 
-Interval operator*(const Interval& a, const Interval& b) {
+[[gnu::flatten]] Interval operator*(const Interval& a, const Interval& b) {
   Interval r;
-  combineInto(r, a, b, RegionOp::Multiply);
+  if (isExactPoint(a) && isExactPoint(b))
+    exactPointProductInto(r, a, b);
+  else
+    combineInto<RegionOp::Multiply>(r, a, b);
   return r;
 }
 
@@ -307,7 +348,14 @@ Interval divided(const Interval& aIn, const Interval& bIn) {
   if (b.idealLo <= 0.0 && b.idealHi >= 0.0) return Interval::unconstrained();
   const Range quotients = float_sets::quotientRange(a.lo, a.hi, b.lo, b.hi);
   Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
-  const Range ideal = float_sets::quotientRange(a.idealLo, a.idealHi, b.idealLo, b.idealHi);
+  // Where the operands' float sets are their ideal ranges (inputs, and
+  // closed values whose set is the tighter bound) the exact quotients are
+  // those already made.
+  const bool setsAreIdeal = sameBits(a.lo, a.idealLo) && sameBits(a.hi, a.idealHi) &&
+                            sameBits(b.lo, b.idealLo) && sameBits(b.hi, b.idealHi);
+  const Range ideal = setsAreIdeal
+                          ? quotients
+                          : float_sets::quotientRange(a.idealLo, a.idealHi, b.idealLo, b.idealHi);
   // |a'/b' - a/b| <= (|a' - a| |b| + |a| |b' - b|) / (|b'| |b|), then the
   // 2.5 ULP of the division itself at the computed quotient.
   const double idealSmallest = std::min(std::fabs(b.idealLo), std::fabs(b.idealHi));

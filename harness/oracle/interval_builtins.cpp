@@ -86,13 +86,13 @@ Interval inversesqrt(const Interval& xIn) {
 Interval sqrt(const Interval& xIn) {
   const Interval x = closedView(xIn);
   if (x.undefined || x.lo < 0.0) return Interval::unconstrained();
-  const Interval zero = Interval::point(0.0f);
-  if (x.hi <= 0.0) return zero;
+  if (x.hi <= 0.0) return Interval::point(0.0f);
   // The float set: the formula 1.0 / inversesqrt(x) itself. Where x is 0
   // the formula's 1/inf limit is 0; elsewhere the smallest positive float
   // keeps inversesqrt below 2^75, inside the division rule's range.
   const Interval positive(std::max(x.lo, kFp32MinDenormal), x.hi);
-  const Interval root = Interval::point(1.0f) / inversesqrt(positive);
+  static const Interval kOne = Interval::point(1.0f);
+  const Interval root = kOne / inversesqrt(positive);
   if (root.undefined) return root;
   const double lo = x.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
   // Its error: the argument's error through sqrt (sqrt(|a' - a|) at worst,

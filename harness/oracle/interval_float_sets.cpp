@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <utility>
 
@@ -36,8 +37,18 @@ double lowestWithinUlps(double lo, double hi, double ulps) {
 Range quotientRange(double alo, double ahi, double blo, double bhi) {
   const std::array<std::pair<double, double>, 4> operands = {
       std::pair{alo, blo}, std::pair{alo, bhi}, std::pair{ahi, blo}, std::pair{ahi, bhi}};
+  // A point (the same bits at both ends) repeats a quotient: a point
+  // dividend, such as sqrt's 1.0 / inversesqrt(x), needs two of the four,
+  // two points one. The repeats would give the same bounds again.
+  const bool pointDividend = fp32_bits::bitsOf(alo) == fp32_bits::bitsOf(ahi);
+  const bool pointDivisor = fp32_bits::bitsOf(blo) == fp32_bits::bitsOf(bhi);
+  const std::size_t count = pointDividend ? (pointDivisor ? 1 : 2) : 4;
+  // With a point divisor and a range dividend, the distinct pairs are the
+  // first and the third.
+  const std::size_t step = !pointDividend && pointDivisor ? 2 : 1;
   Range r{kInf, -kInf};
-  for (const auto& [a, b] : operands) {
+  for (std::size_t k = 0; k < count; k += step) {
+    const auto& [a, b] = operands[k];
     const double q = a / b;
     if (std::isnan(q)) return {kNaN, kNaN};
     // a - q*b is exact in one fma (barring underflow), so its sign says on

@@ -1,0 +1,130 @@
+// The oracle's shorter roads through Interval operations (an exact point
+// times an exact point, ...) must give the general road's bits in every
+// field: a shortcut changes how fast the interval is computed, never what
+// it is.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "oracle/interval.h"
+#include "oracle/precision_rules.h"
+
+namespace snell {
+namespace {
+
+std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
+
+// Every field, bit for bit (a -0 for a +0 is a difference).
+std::vector<std::string> differences(const Interval& a, const Interval& b) {
+  std::vector<std::string> found;
+  const auto number = [&](const char* name, double x, double y) {
+    if (bitsOf(x) != bitsOf(y))
+      found.push_back(std::string(name) + ": " + std::to_string(x) + " vs " + std::to_string(y));
+  };
+  const auto whole = [&](const char* name, long x, long y) {
+    if (x != y)
+      found.push_back(std::string(name) + ": " + std::to_string(x) + " vs " + std::to_string(y));
+  };
+  number("lo", a.lo, b.lo);
+  number("hi", a.hi, b.hi);
+  number("idealLo", a.idealLo, b.idealLo);
+  number("idealHi", a.idealHi, b.idealHi);
+  number("err", a.err, b.err);
+  number("folded", a.folded, b.folded);
+  whole("undefined", a.undefined, b.undefined);
+  whole("constant", a.constant, b.constant);
+  whole("region.kind", static_cast<long>(a.region.kind), static_cast<long>(b.region.kind));
+  number("region.mag", a.region.mag, b.region.mag);
+  number("region.mag0", a.region.mag0, b.region.mag0);
+  number("region.maxSub", a.region.maxSub, b.region.maxSub);
+  whole("region.terms", a.region.terms, b.region.terms);
+  whole("region.degree", a.region.degree, b.region.degree);
+  whole("region.factors", a.region.factors, b.region.factors);
+  whole("region.exactFactors", a.region.exactFactors, b.region.exactFactors);
+  number("region.termRounding", a.region.termRounding, b.region.termRounding);
+  number("region.termFlush", a.region.termFlush, b.region.termFlush);
+  return found;
+}
+
+// Floats of every kind: zeros of both signs, denormals, the smallest
+// normal, the largest float, powers of two, and random floats over the
+// whole exponent range.
+std::vector<float> floatsOfEveryKind() {
+  std::vector<float> values = {0.0f,
+                               -0.0f,
+                               1.0f,
+                               -1.0f,
+                               2.0f,
+                               0.5f,
+                               3.0f,
+                               0.1f,
+                               -0.7f,
+                               1e-45f,
+                               -1e-45f,
+                               1e-40f,
+                               1.17549435e-38f,
+                               -1.17549435e-38f,
+                               1.2e-38f,
+                               3.4028235e38f,
+                               -3.4028235e38f,
+                               1e19f,
+                               1e-19f,
+                               65504.0f,
+                               1.0000001f,
+                               0.99999994f};
+  std::mt19937_64 rng(13);
+  std::uniform_int_distribution<std::uint32_t> bits(0, 0x7f7fffffu);
+  std::bernoulli_distribution negative;
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  for (int k = 0; k < 400; ++k) {
+    const float f = std::bit_cast<float>(bits(rng));
+    values.push_back(negative(rng) ? -f : f);
+    values.push_back(unit(rng));
+  }
+  return values;
+}
+
+// The general road for a point: a constant takes it (an exact point is an
+// input or a uniform), and is there the same value as the input, unless it
+// is a power of two (a literal 2^n multiplies without rounding).
+Interval onTheGeneralRoad(float value) {
+  Interval v = Interval::point(value);
+  v.constant = true;
+  v.folded = value;
+  return v;
+}
+bool isPowerOfTwo(float value) {
+  int exponent = 0;
+  return value != 0.0f && std::frexp(std::fabs(value), &exponent) == 0.5f;
+}
+
+TEST(IntervalShortcut, APointProductTakesTheGeneralRoadsBits) {
+  const std::vector<float> values = floatsOfEveryKind();
+  for (const PrecisionRules rules : {PrecisionRules::Glsl, PrecisionRules::Vulkan}) {
+    const UsePrecisionRules applied(rules);
+    int compared = 0;
+    for (std::size_t i = 0; i < values.size(); i += 3) {
+      for (std::size_t j = 0; j < values.size(); j += 5) {
+        const float x = values[i];
+        const float y = values[j];
+        if (isPowerOfTwo(x) || std::fpclassify(x) == FP_SUBNORMAL) continue;
+        const Interval shortcut = Interval::point(x) * Interval::point(y);
+        const Interval general = onTheGeneralRoad(x) * Interval::point(y);
+        const std::vector<std::string> found = differences(shortcut, general);
+        ASSERT_TRUE(found.empty())
+            << precisionRulesName(rules) << ": " << x << " * " << y << ": " << found.front();
+        ++compared;
+      }
+    }
+    EXPECT_GT(compared, 10000);
+  }
+}
+
+}  // namespace
+}  // namespace snell
