@@ -329,7 +329,12 @@ Interval divided(const Interval& aIn, const Interval& bIn);
 Interval operator/(const Interval& aIn, const Interval& bIn) {
   const Interval direct = divided(aIn, bIn);
   if (direct.undefined || currentPrecisionRules() != PrecisionRules::Vulkan) return direct;
-  const Interval reciprocal = divided(Interval::literal(1.0), bIn);
+  // A dividend of exactly 1 (sqrt's 1.0 / inversesqrt(x)) is the
+  // reciprocal's own: the quotient is the reciprocal, bit for bit, unless a
+  // constant divisor would fold with the literal.
+  const bool dividendIsOne = aIn.lo == 1.0 && aIn.hi == 1.0 && aIn.idealLo == 1.0 &&
+                             aIn.idealHi == 1.0 && aIn.err == 0.0 && !bIn.constant;
+  const Interval reciprocal = dividendIsOne ? direct : divided(Interval::literal(1.0), bIn);
   Interval r = withAlternative(direct, aIn * reciprocal);
   if (!r.undefined && aIn.constant && bIn.constant) addFold(r, aIn.folded / bIn.folded);
   return r;

@@ -107,19 +107,25 @@ inline Range exactSumRange(double alo, double ahi, double blo, double bhi) {
 }
 
 inline Range exactProductRange(double alo, double ahi, double blo, double bhi) {
-  // Two points (the same bits, so the same signed zero) give four copies of
-  // one product: one is enough, and the result is the same.
-  if (fp32_bits::bitsOf(alo) == fp32_bits::bitsOf(ahi) &&
-      fp32_bits::bitsOf(blo) == fp32_bits::bitsOf(bhi)) {
+  // A point (the same bits at both ends, so the same signed zero) repeats
+  // products: two points give four copies of one, a point and a range two
+  // copies of two. The copies would give the same bounds again.
+  const bool pointA = fp32_bits::bitsOf(alo) == fp32_bits::bitsOf(ahi);
+  const bool pointB = fp32_bits::bitsOf(blo) == fp32_bits::bitsOf(bhi);
+  if (pointA && pointB) {
     const detail::Exact p = detail::exactProduct(alo, blo);
     if (std::isnan(p.value)) return {detail::kNaN, detail::kNaN};
     return {detail::doubleBelow(p), detail::doubleAbove(p)};
   }
-  const detail::Exact products[4] = {detail::exactProduct(alo, blo), detail::exactProduct(alo, bhi),
-                                     detail::exactProduct(ahi, blo),
-                                     detail::exactProduct(ahi, bhi)};
+  detail::Exact products[4];
+  int count = 0;
+  products[count++] = detail::exactProduct(alo, blo);
+  if (!pointB) products[count++] = detail::exactProduct(alo, bhi);
+  if (!pointA) products[count++] = detail::exactProduct(ahi, blo);
+  if (!pointA && !pointB) products[count++] = detail::exactProduct(ahi, bhi);
   Range r{detail::kInf, -detail::kInf};
-  for (const detail::Exact& p : products) {
+  for (int k = 0; k < count; ++k) {
+    const detail::Exact& p = products[k];
     if (std::isnan(p.value)) return {detail::kNaN, detail::kNaN};
     r.lo = std::min(r.lo, detail::doubleBelow(p));
     r.hi = std::max(r.hi, detail::doubleAbove(p));

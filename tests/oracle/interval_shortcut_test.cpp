@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "oracle/interval.h"
+#include "oracle/interval_float_sets.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -123,6 +124,39 @@ TEST(IntervalShortcut, APointProductTakesTheGeneralRoadsBits) {
       }
     }
     EXPECT_GT(compared, 10000);
+  }
+}
+
+// exactProductRange takes a point's repeated products once: its bounds are
+// those of all four products, each rounded outward where it is inexact.
+TEST(IntervalShortcut, APointTimesARangeGivesTheFourProductsBounds) {
+  const std::vector<float> values = floatsOfEveryKind();
+  std::mt19937_64 rng(3);
+  std::uniform_int_distribution<std::size_t> pick(0, values.size() - 1);
+  const auto outward = [](double a, double b, bool low) {
+    const double p = a * b;
+    const double error = std::isfinite(p) ? std::fma(a, b, -p) : 0.0;
+    if (low) return error < 0.0 ? std::nextafter(p, -INFINITY) : p;
+    return error > 0.0 ? std::nextafter(p, INFINITY) : p;
+  };
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double point = values[pick(rng)];
+    double lo = values[pick(rng)];
+    double hi = values[pick(rng)];
+    if (hi < lo) std::swap(lo, hi);
+    for (const bool pointFirst : {true, false}) {
+      const float_sets::Range got = pointFirst
+                                        ? float_sets::exactProductRange(point, point, lo, hi)
+                                        : float_sets::exactProductRange(lo, hi, point, point);
+      double low = INFINITY;
+      double high = -INFINITY;
+      for (const double x : {lo, hi}) {
+        low = std::min(low, outward(point, x, true));
+        high = std::max(high, outward(point, x, false));
+      }
+      ASSERT_EQ(bitsOf(got.lo), bitsOf(low)) << point << " * [" << lo << ", " << hi << "]";
+      ASSERT_EQ(bitsOf(got.hi), bitsOf(high)) << point << " * [" << lo << ", " << hi << "]";
+    }
   }
 }
 
