@@ -17,9 +17,8 @@ enum class Builtin { Reflect, Refract };
 
 template <class T, int Size>
 glsl::vec<T, Size> toVec(const std::vector<float>& values) {
-  glsl::vec<T, Size> v;
-  for (int k = 0; k < Size; ++k) v[k] = glsl::fromFloat<T>(values[k]);
-  return v;
+  return glsl::vec<T, Size>(typename glsl::vec<T, Size>::FromEach{},
+                            [&](int k) { return glsl::fromFloat<T>(values[k]); });
 }
 
 template <class T, int Size>

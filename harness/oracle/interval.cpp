@@ -374,8 +374,12 @@ Interval divided(const Interval& aIn, const Interval& bIn) {
     // arithmetic ("Evaluation of Expressions"): a / b as a * (1 / b), the
     // reciprocal within its 2.5 ULP, then one rounding of the product. Its
     // own error: |a'| times the reciprocal's, then the product's rounding.
-    const Range reciprocals = float_sets::quotientRange(1.0, 1.0, b.lo, b.hi);
-    const Range reciprocal = float_sets::withinUlps(reciprocals.lo, reciprocals.hi, 2.5);
+    // With a dividend of exactly 1 the reciprocal is the quotient itself.
+    const bool dividendIsOne = sameBits(a.lo, 1.0) && sameBits(a.hi, 1.0);
+    const Range reciprocals =
+        dividendIsOne ? quotients : float_sets::quotientRange(1.0, 1.0, b.lo, b.hi);
+    const Range reciprocal =
+        dividendIsOne ? set : float_sets::withinUlps(reciprocals.lo, reciprocals.hi, 2.5);
     const Range products = float_sets::roundedProduct(a.lo, a.hi, reciprocal.lo, reciprocal.hi);
     if (std::isnan(products.lo) || std::isnan(products.hi)) return Interval::unconstrained();
     set.lo = std::min(set.lo, products.lo);
