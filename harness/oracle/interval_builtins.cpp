@@ -5,7 +5,6 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <vector>
 
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
@@ -240,16 +239,21 @@ double worstTreeRounding(const double* partial, std::size_t n) {
 Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b) {
   assert(a.size() == b.size() && !a.empty());
   const std::size_t n = a.size();
-  // A vector's dot product or a matrix row has at most four terms: those
-  // stay off the heap.
-  std::array<Interval, 4> inlineProducts;
-  std::vector<Interval> heapProducts;
-  if (n > inlineProducts.size()) heapProducts.resize(n);
-  Interval* const products =
-      n > inlineProducts.size() ? heapProducts.data() : inlineProducts.data();
-  for (std::size_t i = 0; i < n; ++i) products[i] = a[i] * b[i];
-  Interval sum = products[0];
-  for (std::size_t i = 1; i < n; ++i) sum = sum + products[i];
+  // Of each product, what the bound by trees below needs: its ideal range
+  // and the error it carries from its operands (a dot product or a matrix
+  // row has at most four terms; past four the bound is not made).
+  struct Term {
+    double idealLo;
+    double idealHi;
+    double propagated;
+  };
+  std::array<Term, 4> products;
+  Interval sum;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Interval p = a[i] * b[i];
+    if (i < products.size()) products[i] = {p.idealLo, p.idealHi, p.region.mag - p.region.mag0};
+    sum = i == 0 ? p : sum + p;
+  }
   if (sum.undefined || n < 3 || n > 4) return sum;
   // Where every factor is closed, the products are the terms and every
   // order of their sum can be bounded one tree at a time: tighter than the
@@ -260,13 +264,13 @@ Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b)
       return sum;
   std::array<double, 4> termError{};
   for (std::size_t i = 0; i < n; ++i) {
-    const Interval& p = products[i];
+    const Term& p = products[i];
     // Its operands' errors, then its one rounding (or none, fused).
-    const double propagated = p.region.mag - p.region.mag0;
-    termError[i] =
-        up(propagated + float_sets::roundingError(p.idealLo - propagated, p.idealHi + propagated));
+    termError[i] = up(p.propagated + float_sets::roundingError(p.idealLo - p.propagated,
+                                                               p.idealHi + p.propagated));
   }
-  std::array<double, 16> partial{};
+  // Only the masks of one term or more are read.
+  std::array<double, 16> partial;
   const unsigned masks = 1u << n;
   for (unsigned mask = 1; mask < masks; ++mask) {
     double lo = 0.0, hi = 0.0, error = 0.0;
