@@ -160,5 +160,35 @@ TEST(IntervalShortcut, APointTimesARangeGivesTheFourProductsBounds) {
   }
 }
 
+// quotientRange takes a point's repeated quotients once: its bounds are the
+// hull of each pair of ends divided alone.
+TEST(IntervalShortcut, APointDividendOrDivisorGivesEveryPairsBounds) {
+  const std::vector<float> values = floatsOfEveryKind();
+  std::mt19937_64 rng(5);
+  std::uniform_int_distribution<std::size_t> pick(0, values.size() - 1);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double point = values[pick(rng)];
+    double lo = values[pick(rng)];
+    double hi = values[pick(rng)];
+    if (hi < lo) std::swap(lo, hi);
+    if (lo <= 0.0 && hi >= 0.0) continue;  // a divisor that may be 0
+    for (const bool pointDividend : {true, false}) {
+      const auto alone = [&](double end) {
+        return pointDividend ? float_sets::quotientRange(point, point, end, end)
+                             : float_sets::quotientRange(end, end, point, point);
+      };
+      if (!pointDividend && point == 0.0) continue;
+      const float_sets::Range got = pointDividend ? float_sets::quotientRange(point, point, lo, hi)
+                                                  : float_sets::quotientRange(lo, hi, point, point);
+      const float_sets::Range low = alone(lo);
+      const float_sets::Range high = alone(hi);
+      ASSERT_EQ(bitsOf(got.lo), bitsOf(std::min(low.lo, high.lo)))
+          << pointDividend << " " << point << " [" << lo << ", " << hi << "]";
+      ASSERT_EQ(bitsOf(got.hi), bitsOf(std::max(low.hi, high.hi)))
+          << pointDividend << " " << point << " [" << lo << ", " << hi << "]";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace snell
