@@ -70,13 +70,15 @@ double log2Of(double x) { return std::log2(x); }
 Interval inversesqrt(const Interval& xIn) {
   const Interval x = closedView(xIn);
   if (x.undefined || x.lo <= 0.0 || x.idealLo <= 0.0) return Interval::unconstrained();
-  const float_sets::Range set =
-      float_sets::withinUlps(below(1.0 / std::sqrt(x.hi)), above(1.0 / std::sqrt(x.lo)), 2.0);
+  // The largest value, made once: its square root and division are among
+  // the slowest instructions.
+  const double highest = above(1.0 / std::sqrt(x.lo));
+  const float_sets::Range set = float_sets::withinUlps(below(1.0 / std::sqrt(x.hi)), highest, 2.0);
   // |1/sqrt(a') - 1/sqrt(a)| <= |a' - a| / (2 m^1.5), m the smallest
   // argument; then 2 ULP of its own at the computed value.
   const double m = smallestArgument(x);
   const double propagated = x.err / (2.0 * m * std::sqrt(m));
-  const double own = 2.0 * fp32_bits::gapAbove(above(1.0 / std::sqrt(x.lo)));
+  const double own = 2.0 * fp32_bits::gapAbove(highest);
   const Interval r = leafValue(set.lo, set.hi, below(1.0 / std::sqrt(x.idealHi)),
                                above(1.0 / std::sqrt(x.idealLo)), up(up(propagated) + own));
   return folded(r, x, inverseSqrtOf);
