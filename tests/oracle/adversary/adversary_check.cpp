@@ -8,7 +8,10 @@
 
 #include "adversary/adversarial_machine.h"
 #include "catalog_shaders.h"
+#include "core/errors.h"
 #include "core/legacy_builtins.h"
+#include "derived/derived_vertex_oracle.h"
+#include "derived/evaluation.h"
 #include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
 #include "oracle/listings/interface_visitors.h"
@@ -200,6 +203,50 @@ std::string describeVarying(const OracleVarying& v, std::size_t vertex) {
   return s;
 }
 
+// One vertex's attributes, as a batch of one sample.
+AttributeMap vertexAlone(const AttributeMap& attributes, std::size_t vertex) {
+  AttributeMap one;
+  for (const auto& [name, stream] : attributes) {
+    const auto n = static_cast<std::size_t>(stream.components);
+    const auto first = stream.data.begin() + static_cast<std::ptrdiff_t>(vertex * n);
+    one.emplace(name,
+                AttributeStream{stream.name, stream.components,
+                                std::vector<float>(first, first + static_cast<std::ptrdiff_t>(n))});
+  }
+  return one;
+}
+
+// The program the derived oracle evaluates under `rules`: a text that tests
+// VULKAN has a second one, preprocessed as a Vulkan compiler does, where it
+// lowers (derived_vertex_oracle.cpp makes the same choice).
+derived::Program derivedProgram(const derived::ShaderSource& source,
+                                const std::vector<std::string>& outputs, PrecisionRules rules) {
+  if (rules == PrecisionRules::Vulkan && derived::testsVulkanMacro(source.text)) {
+    derived::LowerOptions vulkan;
+    vulkan.vulkanMacros = true;
+    try {
+      return derived::lowerShader(source, outputs, vulkan);
+    } catch (const UsageError&) {
+    }
+  }
+  return derived::lowerShader(source, outputs);
+}
+
+// Each output's components, from one machine evaluation of `program` on
+// a batch of one vertex.
+std::vector<std::vector<float>> machineOutputs(const derived::Program& program,
+                                               const UniformMap& uniforms, const AttributeMap& one,
+                                               PrecisionRules rules, std::uint64_t seed) {
+  Machine::begin(seed, rules);
+  derived::detail::Evaluation<Adv> evaluation(program, uniforms, one, 1);
+  std::vector<std::vector<float>> values;
+  for (const std::vector<Adv>& output : evaluation.run()) {
+    values.emplace_back();
+    for (const Adv& x : output) values.back().push_back(x.value());
+  }
+  return values;
+}
+
 std::string vertexInputs(const AttributeMap& attributes, std::size_t vertex) {
   std::string s;
   for (const auto& [name, stream] : attributes) {
@@ -346,6 +393,56 @@ void checkListing(const ListingInputs& in, PrecisionRules rules, int runs, std::
                                   "{:#x}; allowed:{}",
                                   in.oracle, precisionRulesName(rules), v.name,
                                   vertexInputs(in.attributes, vertex), floats(mine), runSeed,
+                                  describeVarying(v, vertex)));
+      }
+    }
+  }
+}
+
+std::vector<float> derivedOnMachine(const DerivedListingInputs& in, std::size_t vertex,
+                                    PrecisionRules rules, std::uint64_t seed) {
+  const derived::Program program = derivedProgram(in.source, in.outputs, rules);
+  const UsePrecisionRules use(rules);
+  std::vector<float> values;
+  for (const std::vector<float>& output :
+       machineOutputs(program, derived::withLegacyState(program, in.bindings.uniforms),
+                      vertexAlone(in.bindings.attributes, vertex), rules, seed))
+    values.insert(values.end(), output.begin(), output.end());
+  return values;
+}
+
+void checkDerivedListing(const DerivedListingInputs& in, PrecisionRules rules, int runs,
+                         std::uint64_t seed, Tally& tally) {
+  checkDerivedListing(in, in.source, rules, runs, seed, tally);
+}
+
+void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSource& machineSource,
+                         PrecisionRules rules, int runs, std::uint64_t seed, Tally& tally) {
+  const ListingInputs& b = in.bindings;
+  const std::vector<OracleVarying> varyings =
+      derived::makeDerivedVertexOracle(in.source, in.outputs)
+          ->evaluate({b.uniforms, b.constants, b.attributes, b.vertexCount, rules});
+  const derived::Program program = derivedProgram(machineSource, in.outputs, rules);
+  const UniformMap uniforms = derived::withLegacyState(program, b.uniforms);
+  const UsePrecisionRules use(rules);
+  for (std::size_t vertex = 0; vertex < b.vertexCount; ++vertex) {
+    const AttributeMap one = vertexAlone(b.attributes, vertex);
+    for (int run = 0; run < runs; ++run) {
+      const std::uint64_t runSeed =
+          seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+      const std::vector<std::vector<float>> outputs =
+          machineOutputs(program, uniforms, one, rules, runSeed);
+      ++tally.evaluations;
+      if (outputs.size() != varyings.size())
+        throw std::logic_error(in.source.file + ": the machine's program and the oracle's differ");
+      for (std::size_t k = 0; k < outputs.size(); ++k) {
+        const std::vector<float>& mine = outputs[k];
+        const OracleVarying& v = varyings[k];
+        if (fitsVarying(v, vertex, mine)) continue;
+        record(tally, fmt::format("{} (derived, {} rules) {} at vertex{}: machine gave ({}) with "
+                                  "seed {:#x}; allowed:{}",
+                                  in.source.file, precisionRulesName(rules), v.name,
+                                  vertexInputs(b.attributes, vertex), floats(mine), runSeed,
                                   describeVarying(v, vertex)));
       }
     }

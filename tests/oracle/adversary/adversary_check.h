@@ -1,6 +1,7 @@
 #pragma once
 // Holds the adversarial machine's results against the oracle: for a
-// built-in formula or a catalog listing, the oracle's intervals are
+// built-in formula, a catalog listing or a derived program (the oracle of
+// a shader's own text), the oracle's intervals are
 // computed once per input, the machine is run several times with fresh
 // choices, and every vector it returns must fit one of the oracle's
 // alternatives whole (or lie in an undefined component).
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "core/values.h"
+#include "derived/lower_glsl.h"
 #include "oracle/interval.h"
 #include "oracle/precision_rules.h"
 
@@ -76,5 +78,29 @@ std::vector<std::string> machineListings();
 // them), `runs` machine evaluations each.
 void checkListing(const ListingInputs& inputs, PrecisionRules rules, int runs, std::uint64_t seed,
                   Tally& tally);
+
+// A catalog listing's vertex stage as the derived oracle reads it (its own
+// GLSL text), with the inputs of one of its scenes bound by GLSL name.
+struct DerivedListingInputs {
+  derived::ShaderSource source;
+  std::vector<std::string> outputs;  // the manifest's vertex captures
+  ListingInputs bindings;            // `oracle` holds the manifest's id
+};
+
+// The derived program run on the machine, `runs` evaluations for each
+// vertex of `in.bindings`, each held against the derived oracle's
+// intervals for each of `in.outputs`. Throws UsageError
+// where the text is outside the derived oracle's subset.
+void checkDerivedListing(const DerivedListingInputs& in, PrecisionRules rules, int runs,
+                         std::uint64_t seed, Tally& tally);
+// One machine evaluation of the derived program at one vertex of
+// `in.bindings`: each output's components, output after output.
+std::vector<float> derivedOnMachine(const DerivedListingInputs& in, std::size_t vertex,
+                                    PrecisionRules rules, std::uint64_t seed);
+
+// The same with the machine running another text than the oracle reads:
+// for the check's own test, an edited listing must escape.
+void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSource& machineSource,
+                         PrecisionRules rules, int runs, std::uint64_t seed, Tally& tally);
 
 }  // namespace snell::adversary

@@ -3,8 +3,10 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -12,6 +14,7 @@
 #include "core/case.h"
 #include "core/manifest.h"
 #include "core/scene.h"
+#include "derived/lower_glsl.h"
 #include "oracle/listings/interface_visitors.h"
 
 namespace snell::adversary {
@@ -279,6 +282,39 @@ const std::vector<ListingInputs>& catalogListings() {
                                       syntheticInput(name, components, bindings.vertexCount, rng));
       all.push_back(ListingInputs{manifest.oracle, bindings.uniforms, manifest.constants,
                                   bindings.attributes, bindings.vertexCount});
+    }
+    return all;
+  }();
+  return listings;
+}
+
+const std::vector<DerivedListingInputs>& derivedCatalogListings() {
+  static const std::vector<DerivedListingInputs> listings = [] {
+    std::vector<DerivedListingInputs> all;
+    Rng rng(0xde71);
+    const std::filesystem::path root = std::filesystem::path(SNELL_SOURCE_ROOT) / "shaders";
+    for (const Manifest& manifest : loadManifests(root)) {
+      if (manifest.vertexFile.empty() || manifest.captureVertex.empty() || manifest.cases.empty() ||
+          manifest.expect == Expectation::CompileError)
+        continue;
+      const std::filesystem::path file = manifest.path.parent_path() / manifest.vertexFile;
+      std::ifstream in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      const derived::ShaderSource source{file.string(), text.str(), derived::Stage::Vertex};
+      const Scene scene = makeScene(manifest.cases.front().scene);
+      ResolvedBindings bindings = resolveBindings(manifest, scene);
+      if (bindings.vertexCount == 0) bindings.vertexCount = 256;
+      // Inputs the scene does not give (a listing's own attributes), made up.
+      for (const derived::Binding& input :
+           derived::lowerShader(source, manifest.captureVertex).inputs)
+        if (!bindings.attributes.count(input.name))
+          bindings.attributes.emplace(
+              input.name, syntheticInput(input.name, input.components, bindings.vertexCount, rng));
+      all.push_back(
+          DerivedListingInputs{source, manifest.captureVertex,
+                               ListingInputs{manifest.id, bindings.uniforms, manifest.constants,
+                                             bindings.attributes, bindings.vertexCount}});
     }
     return all;
   }();

@@ -29,6 +29,11 @@ std::vector<float> formulaInputs(Formula f, Rng& rng);
 // (one per oracle and set of constants).
 const std::vector<ListingInputs>& catalogListings();
 
+// Every catalog manifest's vertex captures, as the derived oracle reads them,
+// bound to the scene of its first case (listings published as not
+// compiling left out).
+const std::vector<DerivedListingInputs>& derivedCatalogListings();
+
 // `count` vertices of `all`, drawn at random; some of them with their
 // attributes replaced by edge directions, with denormals and huge or tiny
 // scales unless `unitEdges` (the edge directions stay unit vectors).

@@ -1,6 +1,7 @@
 // snell_adversary_soak --seconds N --seed S: the adversarial machine against
-// the oracle until the time is up, built-ins and catalog listings in turn,
-// under both APIs' rules. Prints the evaluations and escapes; an escape
+// the oracle until the time is up, built-ins, catalog listings and the
+// derived programs of the catalog's vertex captures in turn, under both
+// APIs' rules. Prints the evaluations and escapes; an escape
 // comes with its inputs, the machine's seed and, for reflect and refract, a
 // `snell eval` line that shows the oracle's intervals. Exit code 1 when
 // something escaped, 2 for a usage error.
@@ -49,10 +50,11 @@ int main(int argc, char** argv) {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     Rng rng(seed);
-    Tally builtins, listings;
+    Tally builtins, listings, derivedPrograms;
     double nextReport = 30;
-    std::size_t shownBuiltins = 0, shownListings = 0;
+    std::size_t shownBuiltins = 0, shownListings = 0, shownDerived = 0;
     const auto& catalog = catalogListings();
+    const auto& derivedCatalog = derivedCatalogListings();
     for (std::uint64_t round = 0; elapsed() < static_cast<double>(seconds); ++round) {
       const snell::PrecisionRules rules =
           round % 2 ? snell::PrecisionRules::Vulkan : snell::PrecisionRules::Glsl;
@@ -61,26 +63,38 @@ int main(int argc, char** argv) {
           checkFormula(f, formulaInputs(f, rng), rules, 8, rng.next(), builtins);
       const ListingInputs& listing = catalog[round % catalog.size()];
       checkListing(sampleVertices(listing, 16, rng), rules, 6, rng.next(), listings);
+      const DerivedListingInputs& derived = derivedCatalog[round % derivedCatalog.size()];
+      checkDerivedListing(
+          {derived.source, derived.outputs, sampleVertices(derived.bindings, 16, rng)}, rules, 6,
+          rng.next(), derivedPrograms);
       // Escapes as they are found, so that a long run shows them early.
-      for (Tally* t : {&builtins, &listings})
-        for (std::size_t& shown = t == &builtins ? shownBuiltins : shownListings;
+      for (Tally* t : {&builtins, &listings, &derivedPrograms})
+        for (std::size_t& shown = t == &builtins   ? shownBuiltins
+                                  : t == &listings ? shownListings
+                                                   : shownDerived;
              shown < t->firstEscapes.size(); ++shown)
           std::printf("ESCAPE %s\n", t->firstEscapes[shown].c_str());
       if (elapsed() >= nextReport) {
         std::printf("%.0f s: %llu evaluations, %llu escapes\n", elapsed(),
-                    static_cast<unsigned long long>(builtins.evaluations + listings.evaluations),
-                    static_cast<unsigned long long>(builtins.escapes + listings.escapes));
+                    static_cast<unsigned long long>(builtins.evaluations + listings.evaluations +
+                                                    derivedPrograms.evaluations),
+                    static_cast<unsigned long long>(builtins.escapes + listings.escapes +
+                                                    derivedPrograms.escapes));
         std::fflush(stdout);
         nextReport += 30;
       }
     }
     Tally all = builtins;
     all.add(listings);
-    std::printf("seed %llu, %.0f s: %llu evaluations (%llu built-in, %llu listing), %llu escapes\n",
-                seed, elapsed(), static_cast<unsigned long long>(all.evaluations),
-                static_cast<unsigned long long>(builtins.evaluations),
-                static_cast<unsigned long long>(listings.evaluations),
-                static_cast<unsigned long long>(all.escapes));
+    all.add(derivedPrograms);
+    std::printf(
+        "seed %llu, %.0f s: %llu evaluations (%llu built-in, %llu listing, %llu derived program), "
+        "%llu escapes\n",
+        seed, elapsed(), static_cast<unsigned long long>(all.evaluations),
+        static_cast<unsigned long long>(builtins.evaluations),
+        static_cast<unsigned long long>(listings.evaluations),
+        static_cast<unsigned long long>(derivedPrograms.evaluations),
+        static_cast<unsigned long long>(all.escapes));
     return all.escapes ? 1 : 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "snell_adversary_soak: %s\n", e.what());

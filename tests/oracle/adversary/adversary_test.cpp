@@ -1,7 +1,8 @@
 // The standing proof that the oracle is sound: the adversarial machine
 // (adversarial_machine.h) makes every choice the precision rules allow, on
-// random and edge inputs, for the built-ins the catalog uses and for every
-// catalog listing, under the GLSL and the Vulkan rules; every vector it
+// random and edge inputs, for the built-ins the catalog uses, for every
+// catalog listing and for the derived programs of the catalog's vertex
+// captures, under the GLSL and the Vulkan rules; every vector it
 // returns must fit one of the oracle's alternatives whole. Then, that the
 // machine really reaches the choices it claims to make, so that a clean
 // run means something.
@@ -50,6 +51,75 @@ TEST(Adversary, CatalogListingsStayInsideTheOracle) {
     for (const ListingInputs& listing : catalogListings())
       checkListing(sampleVertices(listing, 24, rng), rules, 6, rng.next(), tally);
   expectNoEscape(tally, "catalog listings");
+}
+
+// The derived oracle (a user's own shader, lowered from its text) holds
+// too: the machine makes its choices along the derived program's own
+// operations, not the hand-written listing's.
+TEST(Adversary, DerivedProgramsStayInsideTheDerivedOracle) {
+  Tally tally;
+  Rng rng(0x5eed0004);
+  std::size_t listings = 0;
+  for (PrecisionRules rules : kRules)
+    for (const DerivedListingInputs& listing : derivedCatalogListings()) {
+      const DerivedListingInputs sampled{listing.source, listing.outputs,
+                                         sampleVertices(listing.bindings, 12, rng)};
+      checkDerivedListing(sampled, rules, 4, rng.next(), tally);
+      ++listings;
+    }
+  std::printf("%zu listing runs\n", listings);
+  expectNoEscape(tally, "derived programs");
+}
+
+// A refract listing of its own, with random unit I and N at 12 vertices.
+DerivedListingInputs refractListing(const std::string& eta, Rng& rng) {
+  const std::string text =
+      "#version 330 core\nin vec3 I;\nin vec3 N;\nout vec3 R;\n"
+      "void main() {\n  R = refract(I, N, " +
+      eta + ");\n  gl_Position = vec4(I, 1.0);\n}\n";
+  ListingInputs bindings{"refract-" + eta, {}, {}, {}, 12};
+  for (const char* name : {"I", "N"}) {
+    AttributeStream stream{name, 3, {}};
+    for (std::size_t v = 0; v < bindings.vertexCount; ++v) {
+      const std::vector<float> unit = formulaInputs(Formula::Normalize, rng);
+      const float n = std::sqrt(unit[0] * unit[0] + unit[1] * unit[1] + unit[2] * unit[2]);
+      for (int k = 0; k < 3; ++k)
+        stream.data.push_back(std::isfinite(n) && n > 0.0f ? unit[k] / n : (k == 2 ? 1.0f : 0.0f));
+    }
+    bindings.attributes.emplace(name, std::move(stream));
+  }
+  return {{"refract.vert", text, derived::Stage::Vertex}, {"R"}, bindings};
+}
+
+TEST(Adversary, ADerivedCheckFailsWhereTheMachineRunsAnEditedText) {
+  Rng rng(0x5eed0005);
+  const DerivedListingInputs listing = refractListing("0.66", rng);
+  const DerivedListingInputs edited = refractListing("0.67", rng);
+  for (PrecisionRules rules : kRules) {
+    Tally own, other;
+    checkDerivedListing(listing, rules, 4, 7, own);
+    checkDerivedListing(listing, edited.source, rules, 4, 7, other);
+    EXPECT_EQ(own.escapes, 0u) << (own.firstEscapes.empty() ? "" : own.firstEscapes[0]);
+    EXPECT_GT(other.escapes, 0u) << "an eta of 0.67 passed against 0.66's intervals";
+  }
+}
+
+// The machine makes its choices along a derived program too: a vertex
+// gives more than one vector over fresh seeds (were it always the same,
+// the check above could pass by never leaving the strict evaluation).
+TEST(Adversary, MachineChoosesAlongADerivedProgram) {
+  Rng rng(0x5eed0006);
+  const DerivedListingInputs listing = refractListing("0.66", rng);
+  for (PrecisionRules rules : kRules) {
+    std::size_t varied = 0;
+    for (std::size_t vertex = 0; vertex < listing.bindings.vertexCount; ++vertex) {
+      std::set<std::vector<float>> seen;
+      for (std::uint64_t seed = 1; seed <= 32; ++seed)
+        seen.insert(derivedOnMachine(listing, vertex, rules, seed));
+      if (seen.size() > 1) ++varied;
+    }
+    EXPECT_GT(varied, listing.bindings.vertexCount / 2) << precisionRulesName(rules);
+  }
 }
 
 TEST(Adversary, EveryRegisteredListingRunsOnTheMachine) {
