@@ -2,42 +2,19 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-
 #include "core/build_id.h"
 #include "core/errors.h"
-#include "core/glsl_declarations.h"
 #include "derived/derived_drawing.h"
 #include "derived/derived_vertex_oracle.h"
+#include "derived/manifest_requests.h"
 #include "oracle/reference/reference_image.h"
 #include "runner/run_helpers.h"
 
 namespace snell {
 namespace {
 
-derived::ShaderSource stageSource(const Manifest& m, CaptureStage stage) {
-  const ProgramSource program = loadProgram(m);
-  if (stage == CaptureStage::Vertex)
-    return {program.vertexPath, program.vertex, derived::Stage::Vertex};
-  return {program.fragmentPath, program.fragment, derived::Stage::Fragment};
-}
-
-// The derived oracle's requests: the vertex captures at the end of main(),
-// the fragment captures that are not the stage's inputs after their lines.
-std::vector<derived::OutputRequest> requests(const Manifest& m, CaptureStage stage) {
-  std::vector<derived::OutputRequest> wanted;
-  if (stage == CaptureStage::Vertex) {
-    for (const std::string& name : m.captureVertex) wanted.push_back({name, 0});
-    return wanted;
-  }
-  const auto declarations = readGlobalDeclarations(loadProgram(m).fragment);
-  for (const FragmentCapture& capture : m.captureFragment) {
-    const bool input = std::any_of(declarations.begin(), declarations.end(), [&](const auto& d) {
-      return d.name == capture.name && (d.qualifier == "in" || d.qualifier == "varying");
-    });
-    if (!input) wanted.push_back({capture.name, capture.line});
-  }
-  return wanted;
+derived::Stage derivedStage(CaptureStage stage) {
+  return stage == CaptureStage::Vertex ? derived::Stage::Vertex : derived::Stage::Fragment;
 }
 
 std::unique_ptr<VertexOracle> handWritten(const Manifest& m) {
@@ -80,8 +57,9 @@ std::vector<NamedOracle> vectorOracles(const Manifest& m, CaptureStage stage) {
   std::vector<NamedOracle> oracles;
   if (!m.oracle.empty()) oracles.push_back({m.oracle, handWritten(m), handWrittenIdentity(m)});
   if (m.derivedOracle) {
-    const derived::ShaderSource source = stageSource(m, stage);
-    const std::vector<derived::OutputRequest> wanted = requests(m, stage);
+    const derived::ShaderSource source = derived::stageSource(m, derivedStage(stage));
+    const std::vector<derived::OutputRequest> wanted =
+        derived::captureRequests(m, derivedStage(stage));
     oracles.push_back({kDerivedOracleLabel, derived::makeDerivedVectorOracle(source, wanted),
                        derivedIdentity(source, wanted)});
   }
@@ -98,8 +76,8 @@ DrawingOracles drawingOracles(const Manifest& m) {
                       m.oracle));
     return {m.oracle, handWritten(m), makeFragmentOracle(m.oracle), handWrittenIdentity(m)};
   }
-  const derived::ShaderSource vertex = stageSource(m, CaptureStage::Vertex);
-  const derived::ShaderSource fragment = stageSource(m, CaptureStage::Fragment);
+  const derived::ShaderSource vertex = derived::stageSource(m, derived::Stage::Vertex);
+  const derived::ShaderSource fragment = derived::stageSource(m, derived::Stage::Fragment);
   const std::string vertexIdentity = derivedIdentity(vertex, {});
   const std::string fragmentIdentity = derivedIdentity(fragment, {});
   return {kDerivedOracleLabel, derived::makeDerivedDrawingVertexOracle(vertex),

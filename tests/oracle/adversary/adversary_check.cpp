@@ -220,16 +220,17 @@ AttributeMap vertexAlone(const AttributeMap& attributes, std::size_t vertex) {
 // VULKAN has a second one, preprocessed as a Vulkan compiler does, where it
 // lowers (derived_vertex_oracle.cpp makes the same choice).
 derived::Program derivedProgram(const derived::ShaderSource& source,
-                                const std::vector<std::string>& outputs, PrecisionRules rules) {
+                                const std::vector<derived::OutputRequest>& outputs,
+                                PrecisionRules rules) {
   if (rules == PrecisionRules::Vulkan && derived::testsVulkanMacro(source.text)) {
     derived::LowerOptions vulkan;
     vulkan.vulkanMacros = true;
     try {
-      return derived::lowerShader(source, outputs, vulkan);
+      return derived::lowerOutputs(source, outputs, vulkan);
     } catch (const UsageError&) {
     }
   }
-  return derived::lowerShader(source, outputs);
+  return derived::lowerOutputs(source, outputs);
 }
 
 // Each output's components, from one machine evaluation of `program` on
@@ -420,7 +421,7 @@ void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSo
                          PrecisionRules rules, int runs, std::uint64_t seed, Tally& tally) {
   const ListingInputs& b = in.bindings;
   const std::vector<OracleVarying> varyings =
-      derived::makeDerivedVertexOracle(in.source, in.outputs)
+      derived::makeDerivedVectorOracle(in.source, in.outputs)
           ->evaluate({b.uniforms, b.constants, b.attributes, b.vertexCount, rules});
   const derived::Program program = derivedProgram(machineSource, in.outputs, rules);
   const UniformMap uniforms = derived::withLegacyState(program, b.uniforms);

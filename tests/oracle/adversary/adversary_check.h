@@ -79,12 +79,13 @@ std::vector<std::string> machineListings();
 void checkListing(const ListingInputs& inputs, PrecisionRules rules, int runs, std::uint64_t seed,
                   Tally& tally);
 
-// A catalog listing's vertex stage as the derived oracle reads it (its own
-// GLSL text), with the inputs of one of its scenes bound by GLSL name.
+// A catalog listing's stage as the derived oracle reads it (its own GLSL
+// text and the captures it computes), with the inputs of one of its scenes
+// bound by GLSL name.
 struct DerivedListingInputs {
   derived::ShaderSource source;
-  std::vector<std::string> outputs;  // the manifest's vertex captures
-  ListingInputs bindings;            // `oracle` holds the manifest's id
+  std::vector<derived::OutputRequest> outputs;
+  ListingInputs bindings;  // `oracle` holds the manifest's id
 };
 
 // The derived program run on the machine, `runs` evaluations for each

@@ -3,10 +3,8 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -15,6 +13,7 @@
 #include "core/manifest.h"
 #include "core/scene.h"
 #include "derived/lower_glsl.h"
+#include "derived/manifest_requests.h"
 #include "oracle/listings/interface_visitors.h"
 
 namespace snell::adversary {
@@ -294,27 +293,26 @@ const std::vector<DerivedListingInputs>& derivedCatalogListings() {
     Rng rng(0xde71);
     const std::filesystem::path root = std::filesystem::path(SNELL_SOURCE_ROOT) / "shaders";
     for (const Manifest& manifest : loadManifests(root)) {
-      if (manifest.vertexFile.empty() || manifest.captureVertex.empty() || manifest.cases.empty() ||
-          manifest.expect == Expectation::CompileError)
-        continue;
-      const std::filesystem::path file = manifest.path.parent_path() / manifest.vertexFile;
-      std::ifstream in(file);
-      std::ostringstream text;
-      text << in.rdbuf();
-      const derived::ShaderSource source{file.string(), text.str(), derived::Stage::Vertex};
-      const Scene scene = makeScene(manifest.cases.front().scene);
-      ResolvedBindings bindings = resolveBindings(manifest, scene);
-      if (bindings.vertexCount == 0) bindings.vertexCount = 256;
-      // Inputs the scene does not give (a listing's own attributes), made up.
-      for (const derived::Binding& input :
-           derived::lowerShader(source, manifest.captureVertex).inputs)
-        if (!bindings.attributes.count(input.name))
-          bindings.attributes.emplace(
-              input.name, syntheticInput(input.name, input.components, bindings.vertexCount, rng));
-      all.push_back(
-          DerivedListingInputs{source, manifest.captureVertex,
-                               ListingInputs{manifest.id, bindings.uniforms, manifest.constants,
-                                             bindings.attributes, bindings.vertexCount}});
+      if (manifest.cases.empty() || manifest.expect == Expectation::CompileError) continue;
+      for (derived::Stage stage : {derived::Stage::Vertex, derived::Stage::Fragment}) {
+        const std::vector<derived::OutputRequest> wanted =
+            derived::captureRequests(manifest, stage);
+        if (wanted.empty()) continue;
+        const derived::ShaderSource source = derived::stageSource(manifest, stage);
+        const Scene scene = makeScene(manifest.cases.front().scene);
+        ResolvedBindings bindings = resolveBindings(manifest, scene);
+        if (bindings.vertexCount == 0) bindings.vertexCount = 256;
+        // Inputs the scene does not give (a fragment stage's interpolated
+        // values, a capture read back where the oracle cannot follow it).
+        for (const derived::Binding& input : derived::lowerOutputs(source, wanted).inputs)
+          if (!bindings.attributes.count(input.name))
+            bindings.attributes.emplace(input.name, syntheticInput(input.name, input.components,
+                                                                   bindings.vertexCount, rng));
+        all.push_back(
+            DerivedListingInputs{source, wanted,
+                                 ListingInputs{manifest.id, bindings.uniforms, manifest.constants,
+                                               bindings.attributes, bindings.vertexCount}});
+      }
     }
     return all;
   }();

@@ -29,9 +29,9 @@ std::vector<float> formulaInputs(Formula f, Rng& rng);
 // (one per oracle and set of constants).
 const std::vector<ListingInputs>& catalogListings();
 
-// Every catalog manifest's vertex captures, as the derived oracle reads them,
-// bound to the scene of its first case (listings published as not
-// compiling left out).
+// Every catalog manifest's vertex and fragment captures, as the derived
+// oracle computes them (derived/manifest_requests.h), bound to the scene of
+// its first case (listings published as not compiling left out).
 const std::vector<DerivedListingInputs>& derivedCatalogListings();
 
 // `count` vertices of `all`, drawn at random; some of them with their

@@ -1,6 +1,6 @@
 // snell_adversary_soak --seconds N --seed S: the adversarial machine against
 // the oracle until the time is up, built-ins, catalog listings and the
-// derived programs of the catalog's vertex captures in turn, under both
+// derived programs of the catalog's captures in turn, under both
 // APIs' rules. Prints the evaluations and escapes; an escape
 // comes with its inputs, the machine's seed and, for reflect and refract, a
 // `snell eval` line that shows the oracle's intervals. Exit code 1 when

@@ -1,8 +1,8 @@
 // The standing proof that the oracle is sound: the adversarial machine
 // (adversarial_machine.h) makes every choice the precision rules allow, on
 // random and edge inputs, for the built-ins the catalog uses, for every
-// catalog listing and for the derived programs of the catalog's vertex
-// captures, under the GLSL and the Vulkan rules; every vector it
+// catalog listing and for the derived programs of the catalog's captures,
+// under the GLSL and the Vulkan rules; every vector it
 // returns must fit one of the oracle's alternatives whole. Then, that the
 // machine really reaches the choices it claims to make, so that a clean
 // run means something.
@@ -88,7 +88,7 @@ DerivedListingInputs refractListing(const std::string& eta, Rng& rng) {
     }
     bindings.attributes.emplace(name, std::move(stream));
   }
-  return {{"refract.vert", text, derived::Stage::Vertex}, {"R"}, bindings};
+  return {{"refract.vert", text, derived::Stage::Vertex}, {{"R", 0}}, bindings};
 }
 
 TEST(Adversary, ADerivedCheckFailsWhereTheMachineRunsAnEditedText) {
