@@ -18,22 +18,35 @@ std::string noCaseMatchesMessage(const std::vector<Manifest>& manifests, const s
         "`snell list` shows each case's checks",
         kind, glob, otherKind.size(), otherKind.front(),
         otherKind.size() > 1 ? fmt::format(" and {} more", otherKind.size() - 1) : "");
-  for (const Manifest& manifest : manifests) {
-    if (fnmatch(glob.c_str(), manifest.id.c_str(), 0) != 0) continue;
+  // The listings whose id the filter matches: a glob may match several.
+  std::vector<const Manifest*> listings;
+  for (const Manifest& manifest : manifests)
+    if (fnmatch(glob.c_str(), manifest.id.c_str(), 0) == 0) listings.push_back(&manifest);
+  if (!listings.empty()) {
+    const bool one = listings.size() == 1;
+    const std::string which =
+        one ? fmt::format("which is listing {}'s id", listings.front()->id)
+            : fmt::format("which matches the ids of listings {}{}", listings.front()->id,
+                          listings.size() == 2 ? fmt::format(" and {}", listings.back()->id)
+                                               : fmt::format(", {} and {} more", listings[1]->id,
+                                                             listings.size() - 2));
     // The filter that works, where it does: a listing with no image case
     // is no better matched by its cases' glob, and is said to have none.
-    const std::string cases = manifest.id + "/*";
-    const std::vector<Case> matched = expandCases({manifest}, cases);
-    if (kind == "image " && std::none_of(matched.begin(), matched.end(),
-                                         [](const Case& c) { return c.spec.has("image"); }))
+    const std::string cases = (one ? listings.front()->id : glob) + "/*";
+    const bool anyImage = std::any_of(listings.begin(), listings.end(), [](const Manifest* m) {
+      const std::vector<Case> matched = expandCases({*m}, m->id + "/*");
+      return std::any_of(matched.begin(), matched.end(),
+                         [](const Case& c) { return c.spec.has("image"); });
+    });
+    if (kind == "image " && !anyImage)
       return fmt::format(
-          "no image case matches --filter '{}', which is listing {}'s id, and none of its "
-          "cases is an image case; `snell list` shows each case's checks",
-          glob, manifest.id);
+          "no image case matches --filter '{}', {}, and none of {} cases is an image case; "
+          "`snell list` shows each case's checks",
+          glob, which, one ? "its" : "their");
     return fmt::format(
-        "no {}case matches --filter '{}', which is listing {}'s id: a case's id adds its "
-        "scene; use --filter '{}' for all of its cases",
-        kind, glob, manifest.id, cases);
+        "no {}case matches --filter '{}', {}: a case's id adds its scene; use --filter '{}' for "
+        "{} cases",
+        kind, glob, which, cases, one ? "all of its" : "their");
   }
   return fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids", kind, glob);
 }

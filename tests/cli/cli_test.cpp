@@ -411,7 +411,17 @@ TEST(Cli, ListFilterMatchingNothingIsExit2) {
             "no image case matches --filter 'cs381/*': the 9 case(s) it matches "
             "(cs381/chromatic-aberration/sphere and 8 more) are not image cases"},
            {"bless --filter 'cs381/glass' --golden /tmp",
-            "which is listing cs381/glass's id, and none of its cases is an image case"}}) {
+            "which is listing cs381/glass's id, and none of its cases is an image case"},
+           // A glob over several listings' ids names each of them, and the
+           // glob that matches their cases.
+           {"list --filter 'blog/[fd]*[ln]'",
+            "which matches the ids of listings blog/diffraction and blog/fresnel: a case's id "
+            "adds its scene; use --filter 'blog/[fd]*[ln]/*' for their cases"},
+           {"bless --filter 'blog/[fc]*[lc]' --golden /tmp",
+            "which matches the ids of listings blog/chromatic and blog/fresnel, and none of "
+            "their cases is an image case"},
+           {"list --filter 'blog/*[cln]'",
+            "which matches the ids of listings blog/chromatic, blog/diffraction and 1 more"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
