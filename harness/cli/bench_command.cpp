@@ -196,20 +196,15 @@ Command addBenchCommand(CLI::App& app) {
   bench->add_option("--backends", options->run.backends, "Backends to time, e.g. gl,vk")
       ->delimiter(',')
       ->capture_default_str();
-  bench
-      ->add_option("--resolutions", options->run.resolutions,
-                   "Square image sizes in pixels; the error is measured at the last")
-      ->delimiter(',')
-      ->check(nonEmpty("list of sizes", "give sizes in pixels, e.g. 128,256,512"))
-      ->capture_default_str();
-  bench
-      ->add_option("--tessellations", options->run.tessellations,
-                   "Sphere tessellations to time at the largest resolution, as stacks (slices "
-                   "in the scene's ratio, 2 per stack on `sphere`): how the time grows with the "
-                   "vertex count (default: the scene's own, a quarter and four times it; the "
-                   "error is measured at the scene's own)")
-      ->delimiter(',')
-      ->check(nonEmpty("list of stacks", "give stacks, e.g. 12,48,192"));
+  addWholeNumberList(*bench, "--resolutions", options->run.resolutions,
+                     "Square image sizes in pixels; the error is measured at the last",
+                     "list of sizes", "give sizes in pixels, e.g. 128,256,512");
+  addWholeNumberList(*bench, "--tessellations", options->run.tessellations,
+                     "Sphere tessellations to time at the largest resolution, as stacks (slices "
+                     "in the scene's ratio, 2 per stack on `sphere`): how the time grows with the "
+                     "vertex count (default: the scene's own, a quarter and four times it; the "
+                     "error is measured at the scene's own)",
+                     "list of stacks", "give stacks, e.g. 12,48,192");
   // Ranges stated here: past int, CLI11 says only "Could not convert".
   bench->add_option("--repeats", options->run.repeats, "Timed frames per resolution")
       ->check(wholeNumber())

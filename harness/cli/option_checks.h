@@ -1,9 +1,12 @@
 #pragma once
 // Checks of option values beyond CLI11's own.
+#include <fmt/format.h>
+
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 namespace snell::cli {
 
@@ -56,6 +59,51 @@ inline CLI::Validator wholeNumber() {
         return digits ? "" : "give a whole number";
       },
       "");
+}
+
+// A list of whole numbers joined by commas (`--resolutions 128,256,512`),
+// checked as given: CLI11's own delimiter drops an empty item ("16,,32"),
+// more likely a number left out than meant, and says only "Could not
+// convert" of an item that is not a number. `what` names the list, `hint`
+// says how to give one. Ranges are the command's to check.
+inline CLI::Option* addWholeNumberList(CLI::App& app, const std::string& name,
+                                       std::vector<int>& target, const std::string& description,
+                                       const std::string& what, const std::string& hint) {
+  const auto items = [](const std::string& text) {
+    std::vector<std::string> parts;
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t comma = text.find(',', start);
+      parts.push_back(text.substr(start, comma == std::string::npos ? comma : comma - start));
+      if (comma == std::string::npos) return parts;
+      start = comma + 1;
+    }
+  };
+  CLI::Option* option = app.add_option_function<std::string>(
+      name,
+      [&target, items](const std::string& text) {
+        target.clear();
+        for (const std::string& item : items(text)) target.push_back(std::stoi(item));
+      },
+      description);
+  option->check(CLI::Validator(
+      [what, hint, items](const std::string& text) -> std::string {
+        if (text.empty()) return "an empty " + what + "; " + hint + ", or leave the option out";
+        const std::vector<std::string> parts = items(text);
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+          const std::string& item = parts[k];
+          if (item.empty()) return fmt::format("item {} of `{}` is empty; {}", k + 1, text, hint);
+          if (item.find_first_not_of("0123456789") != std::string::npos)
+            return fmt::format("`{}` is not a whole number; {}", item, hint);
+          // Nine digits stay inside int; the command's range check says more.
+          if (item.size() > 9) return fmt::format("`{}` is too large; {}", item, hint);
+        }
+        return "";
+      },
+      ""));
+  option->type_name("INT,...");
+  if (!target.empty()) option->default_str(fmt::format("{}", fmt::join(target, ",")));
+  return option;
 }
 
 }  // namespace snell::cli

@@ -342,7 +342,15 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"run --shard / --filter 'no-such/*'", "--shard: empty"},
            {"bench --backends vk,vk", "`vk` is named twice"},
            {"bench --resolutions 64,32", "--resolutions 64,32: give them in increasing order"},
-           {"bench --resolutions 32,32", "--resolutions 32,32: give them in increasing order"}}) {
+           {"bench --resolutions 32,32", "--resolutions 32,32: give them in increasing order"},
+           // A list is read as given: an empty item is a number left out,
+           // not one to drop (CLI11's own delimiter drops it).
+           {"bench --resolutions 16,,32", "--resolutions: item 2 of `16,,32` is empty"},
+           {"bench --resolutions 16,32,", "--resolutions: item 3 of `16,32,` is empty"},
+           {"bench --resolutions 16,abc", "--resolutions: `abc` is not a whole number"},
+           {"bench --resolutions ''", "--resolutions: an empty list of sizes"},
+           {"bench --resolutions 99999999999", "--resolutions: `99999999999` is too large"},
+           {"bench --tessellations 12,,48", "--tessellations: item 2 of `12,,48` is empty"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
