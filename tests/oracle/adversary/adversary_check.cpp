@@ -216,23 +216,6 @@ AttributeMap vertexAlone(const AttributeMap& attributes, std::size_t vertex) {
   return one;
 }
 
-// The program the derived oracle evaluates under `rules`: a text that tests
-// VULKAN has a second one, preprocessed as a Vulkan compiler does, where it
-// lowers (derived_vertex_oracle.cpp makes the same choice).
-derived::Program derivedProgram(const derived::ShaderSource& source,
-                                const std::vector<derived::OutputRequest>& outputs,
-                                PrecisionRules rules) {
-  if (rules == PrecisionRules::Vulkan && derived::testsVulkanMacro(source.text)) {
-    derived::LowerOptions vulkan;
-    vulkan.vulkanMacros = true;
-    try {
-      return derived::lowerOutputs(source, outputs, vulkan);
-    } catch (const UsageError&) {
-    }
-  }
-  return derived::lowerOutputs(source, outputs);
-}
-
 // Each output's components, from one machine evaluation of `program` on
 // a batch of one vertex.
 std::vector<std::vector<float>> machineOutputs(const derived::Program& program,
@@ -270,6 +253,8 @@ bool fitsOneWay(const std::vector<std::vector<Interval>>& ways, std::span<const 
 
 void Tally::add(const Tally& other) {
   evaluations += other.evaluations;
+  components += other.components;
+  boundedComponents += other.boundedComponents;
   escapes += other.escapes;
   for (const std::string& e : other.firstEscapes)
     if (firstEscapes.size() < kEscapesKept) firstEscapes.push_back(e);
@@ -402,7 +387,8 @@ void checkListing(const ListingInputs& in, PrecisionRules rules, int runs, std::
 
 std::vector<float> derivedOnMachine(const DerivedListingInputs& in, std::size_t vertex,
                                     PrecisionRules rules, std::uint64_t seed) {
-  const derived::Program program = derivedProgram(in.source, in.outputs, rules);
+  const derived::ApiPrograms programs = derived::lowerForEachApi(in.source, in.outputs);
+  const derived::Program& program = programs.forRules(rules);
   const UsePrecisionRules use(rules);
   std::vector<float> values;
   for (const std::vector<float>& output :
@@ -423,7 +409,10 @@ void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSo
   const std::vector<OracleVarying> varyings =
       derived::makeDerivedVectorOracle(in.source, in.outputs)
           ->evaluate({b.uniforms, b.constants, b.attributes, b.vertexCount, rules});
-  const derived::Program program = derivedProgram(machineSource, in.outputs, rules);
+  // The program the derived oracle evaluates under these rules, of the
+  // machine's text.
+  const derived::ApiPrograms programs = derived::lowerForEachApi(machineSource, in.outputs);
+  const derived::Program& program = programs.forRules(rules);
   const UniformMap uniforms = derived::withLegacyState(program, b.uniforms);
   const UsePrecisionRules use(rules);
   for (std::size_t vertex = 0; vertex < b.vertexCount; ++vertex) {
@@ -439,6 +428,15 @@ void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSo
       for (std::size_t k = 0; k < outputs.size(); ++k) {
         const std::vector<float>& mine = outputs[k];
         const OracleVarying& v = varyings[k];
+        const auto components = static_cast<std::size_t>(v.components);
+        if (mine.size() != components)
+          throw std::logic_error(
+              fmt::format("{}: the machine's {} has {} components, the oracle's {}", in.source.file,
+                          v.name, mine.size(), components));
+        // What the check holds: the components the oracle bounds.
+        tally.components += components;
+        for (std::size_t i = 0; i < components; ++i)
+          if (!v.undefined[vertex * components + i]) ++tally.boundedComponents;
         if (fitsVarying(v, vertex, mine)) continue;
         record(tally, fmt::format("{} (derived, {} rules) {} at vertex{}: machine gave ({}) with "
                                   "seed {:#x}; allowed:{}",

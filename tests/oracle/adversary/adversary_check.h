@@ -18,8 +18,13 @@
 namespace snell::adversary {
 
 struct Tally {
-  std::uint64_t evaluations = 0;          // machine evaluations held against the oracle
-  std::uint64_t escapes = 0;              // results outside every alternative
+  std::uint64_t evaluations = 0;  // machine evaluations held against the oracle
+  std::uint64_t escapes = 0;      // results outside every alternative
+  // Of the derived programs' outputs: the components held against the
+  // oracle, and those it bounds (not undefined), so that a check passing
+  // on undefined components only shows.
+  std::uint64_t components = 0;
+  std::uint64_t boundedComponents = 0;
   std::vector<std::string> firstEscapes;  // at most kEscapesKept, with a reproduction each
   static constexpr std::size_t kEscapesKept = 8;
   void add(const Tally& other);

@@ -55,6 +55,10 @@ int main(int argc, char** argv) {
     std::size_t shownBuiltins = 0, shownListings = 0, shownDerived = 0;
     const auto& catalog = catalogListings();
     const auto& derivedCatalog = derivedCatalogListings();
+    if (catalog.empty() || derivedCatalog.empty()) {
+      std::fprintf(stderr, "snell_adversary_soak: the catalog (shaders/) has no listings\n");
+      return 2;
+    }
     for (std::uint64_t round = 0; elapsed() < static_cast<double>(seconds); ++round) {
       const snell::PrecisionRules rules =
           round % 2 ? snell::PrecisionRules::Vulkan : snell::PrecisionRules::Glsl;
