@@ -4,6 +4,7 @@
 #include <fnmatch.h>
 
 #include <algorithm>
+#include <set>
 
 #include "core/case.h"
 
@@ -32,21 +33,31 @@ std::string noCaseMatchesMessage(const std::vector<Manifest>& manifests, const s
                                                              listings.size() - 2));
     // The filter that works, where it does: a listing with no image case
     // is no better matched by its cases' glob, and is said to have none.
-    const std::string cases = (one ? listings.front()->id : glob) + "/*";
-    const bool anyImage = std::any_of(listings.begin(), listings.end(), [](const Manifest* m) {
-      const std::vector<Case> matched = expandCases({*m}, m->id + "/*");
-      return std::any_of(matched.begin(), matched.end(),
-                         [](const Case& c) { return c.spec.has("image"); });
-    });
-    if (kind == "image " && !anyImage)
+    const auto casesOf = [](const Manifest& m) { return expandCases({m}, m.id + "/*"); };
+    if (kind == "image " && std::none_of(listings.begin(), listings.end(), [&](const Manifest* m) {
+          const std::vector<Case> cases = casesOf(*m);
+          return std::any_of(cases.begin(), cases.end(),
+                             [](const Case& c) { return c.spec.has("image"); });
+        }))
       return fmt::format(
           "no image case matches --filter '{}', {}, and none of {} cases is an image case; "
           "`snell list` shows each case's checks",
           glob, which, one ? "its" : "their");
+    if (one)
+      return fmt::format(
+          "no {}case matches --filter '{}', {}: a case's id adds its scene; use --filter '{}/*' "
+          "for all of its cases",
+          kind, glob, which, listings.front()->id);
+    // `GLOB/*` where it matches those listings' cases and no others (a `*`
+    // also matches a '/', so it may reach into other listings).
+    std::set<std::string> theirs, viaGlob;
+    for (const Manifest* m : listings)
+      for (const Case& c : casesOf(*m)) theirs.insert(c.id);
+    for (const Case& c : expandCases(manifests, glob + "/*")) viaGlob.insert(c.id);
     return fmt::format(
-        "no {}case matches --filter '{}', {}: a case's id adds its scene; use --filter '{}' for "
-        "{} cases",
-        kind, glob, which, cases, one ? "all of its" : "their");
+        "no {}case matches --filter '{}', {}: a case's id adds its scene; {}", kind, glob, which,
+        theirs == viaGlob ? fmt::format("use --filter '{}/*' for their cases", glob)
+                          : std::string("use --filter 'ID/*' for each listing's cases"));
   }
   return fmt::format("no {}case matches --filter '{}'; `snell list` shows the ids", kind, glob);
 }

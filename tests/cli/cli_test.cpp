@@ -429,7 +429,12 @@ TEST(Cli, ListFilterMatchingNothingIsExit2) {
             "which matches the ids of listings blog/chromatic and blog/fresnel, and none of "
             "their cases is an image case"},
            {"list --filter 'blog/*[cln]'",
-            "which matches the ids of listings blog/chromatic, blog/diffraction and 1 more"}}) {
+            "which matches the ids of listings blog/chromatic, blog/diffraction and 1 more"},
+           // `*l/*` would also match every learnopengl case (a `*` matches
+           // '/'): not offered.
+           {"list --filter '*l'",
+            "which matches the ids of listings blog/fresnel, methods/fresnel/2-empirical and 2 "
+            "more: a case's id adds its scene; use --filter 'ID/*' for each listing's cases"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
