@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "adversary/adversarial_machine.h"
@@ -142,9 +143,45 @@ std::vector<float> runOnMachine(const UniformMap& uniforms, const ConstantMap& c
   return values;
 }
 
+// The same, each output by its name.
+using NamedOutputs = std::map<std::string, std::vector<float>>;
+using NamedMachineRun = NamedOutputs (*)(const UniformMap&, const ConstantMap&, const AttributeMap&,
+                                         std::size_t vertex);
+
+template <class T>
+class CollectNamedOutputs {
+ public:
+  template <class X>
+  void input(const char*, X&) {}
+  template <class X>
+  void uniform(const char*, X&) {}
+  void constant(const char*, T&) {}
+  template <class X>
+  void output(const char* name, X& variable) {
+    std::vector<float>& values = outputs[name];
+    listings::forEachComponent(variable, [&](T& value) { values.push_back(value.value()); });
+  }
+  NamedOutputs outputs;
+};
+
+template <template <class> class Shader>
+NamedOutputs runNamedOnMachine(const UniformMap& uniforms, const ConstantMap& constants,
+                               const AttributeMap& attributes, std::size_t vertex) {
+  Shader<Adv> shader{};
+  listings::BindUniforms<Adv> bindUniforms(uniforms, constants);
+  shader.visit(bindUniforms);
+  listings::BindVertex<Adv> bindVertex(attributes, vertex);
+  shader.visit(bindVertex);
+  shader.main();
+  CollectNamedOutputs<Adv> outputs;
+  shader.visit(outputs);
+  return outputs.outputs;
+}
+
 struct MachineListing {
   std::string name;
   MachineRun run;
+  NamedMachineRun runNamed;
   bool legacy;  // reads fixed-function state derived from the bound matrices
 };
 
@@ -152,7 +189,7 @@ const std::vector<MachineListing>& machineListingTable() {
   static const std::vector<MachineListing> table = [] {
     std::vector<MachineListing> all;
     test::forEachCatalogShader([&]<template <class> class Shader>(const char* name, bool legacy) {
-      all.push_back(MachineListing{name, runOnMachine<Shader>, legacy});
+      all.push_back(MachineListing{name, runOnMachine<Shader>, runNamedOnMachine<Shader>, legacy});
     });
     return all;
   }();
@@ -442,6 +479,47 @@ void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSo
                                   "seed {:#x}; allowed:{}",
                                   in.source.file, precisionRulesName(rules), v.name,
                                   vertexInputs(b.attributes, vertex), floats(mine), runSeed,
+                                  describeVarying(v, vertex)));
+      }
+    }
+  }
+}
+
+void checkHandWrittenAgainstDerived(const DerivedListingInputs& in, PrecisionRules rules, int runs,
+                                    std::uint64_t seed, Tally& tally) {
+  if (in.handWritten.empty()) return;
+  const ListingInputs& b = in.bindings;
+  const std::vector<OracleVarying> varyings =
+      derived::makeDerivedVectorOracle(in.source, in.outputs)
+          ->evaluate({b.uniforms, b.constants, b.attributes, b.vertexCount, rules});
+  const MachineListing& listing = machineListing(in.handWritten);
+  const UniformMap uniforms = listing.legacy ? withDerivedLegacyState(b.uniforms) : b.uniforms;
+  const UsePrecisionRules use(rules);
+  for (std::size_t vertex = 0; vertex < b.vertexCount; ++vertex) {
+    for (int run = 0; run < runs; ++run) {
+      const std::uint64_t runSeed =
+          seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+      Machine::begin(runSeed, rules);
+      const NamedOutputs outputs = listing.runNamed(uniforms, b.constants, b.attributes, vertex);
+      ++tally.evaluations;
+      for (const OracleVarying& v : varyings) {
+        // A capture the hand-written listing names otherwise (or keeps as
+        // a local) is not compared.
+        const auto mine = outputs.find(v.name);
+        if (mine == outputs.end()) continue;
+        const auto components = static_cast<std::size_t>(v.components);
+        if (mine->second.size() != components)
+          throw std::logic_error(fmt::format("{}: {} has {} components in {}, {} derived",
+                                             in.source.file, v.name, mine->second.size(),
+                                             in.handWritten, components));
+        tally.components += components;
+        for (std::size_t i = 0; i < components; ++i)
+          if (!v.undefined[vertex * components + i]) ++tally.boundedComponents;
+        if (fitsVarying(v, vertex, mine->second)) continue;
+        record(tally, fmt::format("{} (hand-written {} on the machine, derived oracle, {} rules) "
+                                  "{} at vertex{}: machine gave ({}) with seed {:#x}; allowed:{}",
+                                  in.source.file, in.handWritten, precisionRulesName(rules), v.name,
+                                  vertexInputs(b.attributes, vertex), floats(mine->second), runSeed,
                                   describeVarying(v, vertex)));
       }
     }

@@ -90,7 +90,8 @@ void checkListing(const ListingInputs& inputs, PrecisionRules rules, int runs, s
 struct DerivedListingInputs {
   derived::ShaderSource source;
   std::vector<derived::OutputRequest> outputs;
-  ListingInputs bindings;  // `oracle` holds the manifest's id
+  ListingInputs bindings;   // `oracle` holds the manifest's id
+  std::string handWritten;  // the manifest's hand-written oracle, if it has one
 };
 
 // The derived program run on the machine, `runs` evaluations for each
@@ -103,6 +104,15 @@ void checkDerivedListing(const DerivedListingInputs& in, PrecisionRules rules, i
 // `in.bindings`: each output's components, output after output.
 std::vector<float> derivedOnMachine(const DerivedListingInputs& in, std::size_t vertex,
                                     PrecisionRules rules, std::uint64_t seed);
+
+// The manifest's hand-written listing run on the machine, each output the
+// derived oracle computes under the same name held against it: the derived
+// oracle read from the text must allow what an implementation of the
+// listing as published may return (its lowering included, which the check
+// above cannot see, the machine and the oracle reading one program there).
+// Nothing where the manifest has no hand-written oracle.
+void checkHandWrittenAgainstDerived(const DerivedListingInputs& in, PrecisionRules rules, int runs,
+                                    std::uint64_t seed, Tally& tally);
 
 // The same with the machine running another text than the oracle reads:
 // for the check's own test, an edited listing must escape.

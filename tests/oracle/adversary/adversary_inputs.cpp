@@ -328,10 +328,17 @@ const std::vector<DerivedListingInputs>& derivedCatalogListings() {
               bindings.attributes.emplace(input.name, syntheticInput(input.name, input.components,
                                                                      bindings.vertexCount, rng));
         }
+        // And the hand-written listing's, which the machine runs too.
+        if (!manifest.oracle.empty())
+          for (const auto& [name, components] : interfaceInputs(manifest.oracle))
+            if (!bindings.attributes.count(name))
+              bindings.attributes.emplace(
+                  name, syntheticInput(name, components, bindings.vertexCount, rng));
         all.push_back(
             DerivedListingInputs{source, wanted,
                                  ListingInputs{manifest.id, bindings.uniforms, manifest.constants,
-                                               bindings.attributes, bindings.vertexCount}});
+                                               bindings.attributes, bindings.vertexCount},
+                                 manifest.oracle});
       }
     }
     return all;

@@ -68,9 +68,11 @@ int main(int argc, char** argv) {
       const ListingInputs& listing = catalog[round % catalog.size()];
       checkListing(sampleVertices(listing, 16, rng), rules, 6, rng.next(), listings);
       const DerivedListingInputs& derived = derivedCatalog[round % derivedCatalog.size()];
-      checkDerivedListing(
-          {derived.source, derived.outputs, sampleVertices(derived.bindings, 16, rng)}, rules, 6,
-          rng.next(), derivedPrograms);
+      const DerivedListingInputs sampled{derived.source, derived.outputs,
+                                         sampleVertices(derived.bindings, 16, rng),
+                                         derived.handWritten};
+      checkDerivedListing(sampled, rules, 6, rng.next(), derivedPrograms);
+      checkHandWrittenAgainstDerived(sampled, rules, 6, rng.next(), derivedPrograms);
       // Escapes as they are found, so that a long run shows them early.
       for (Tally* t : {&builtins, &listings, &derivedPrograms})
         for (std::size_t& shown = t == &builtins   ? shownBuiltins
