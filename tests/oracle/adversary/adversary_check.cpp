@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "adversary/adversarial_machine.h"
 #include "catalog_shaders.h"
@@ -122,13 +122,15 @@ void record(Tally& tally, std::string message) {
     tally.firstEscapes.push_back(std::move(message));
 }
 
-// One catalog listing run on the machine.
-using MachineRun = std::vector<float> (*)(const UniformMap&, const ConstantMap&,
-                                          const AttributeMap&, std::size_t vertex);
+// One catalog listing run on the machine: each output's components, by
+// name, in the listing's visit order.
+using NamedOutputs = std::vector<std::pair<std::string, std::vector<float>>>;
+using MachineRun = NamedOutputs (*)(const UniformMap&, const ConstantMap&, const AttributeMap&,
+                                    std::size_t vertex);
 
 template <template <class> class Shader>
-std::vector<float> runOnMachine(const UniformMap& uniforms, const ConstantMap& constants,
-                                const AttributeMap& attributes, std::size_t vertex) {
+NamedOutputs runOnMachine(const UniformMap& uniforms, const ConstantMap& constants,
+                          const AttributeMap& attributes, std::size_t vertex) {
   Shader<Adv> shader{};
   listings::BindUniforms<Adv> bindUniforms(uniforms, constants);
   shader.visit(bindUniforms);
@@ -137,51 +139,30 @@ std::vector<float> runOnMachine(const UniformMap& uniforms, const ConstantMap& c
   shader.main();
   listings::CollectOutputs<Adv> outputs;
   shader.visit(outputs);
-  std::vector<float> values;
-  values.reserve(outputs.values.size());
-  for (const Adv& x : outputs.values) values.push_back(x.value());
-  return values;
+  listings::DescribeInterface describe;
+  shader.visit(describe);
+  NamedOutputs named;
+  std::size_t next = 0;
+  for (const listings::InterfaceEntry& e : describe.entries()) {
+    if (e.kind != listings::InterfaceEntry::Kind::Output) continue;
+    std::vector<float>& values = named.emplace_back(e.name, std::vector<float>{}).second;
+    for (int k = 0; k < componentCount(e.type); ++k)
+      values.push_back(outputs.values[next++].value());
+  }
+  return named;
 }
 
-// The same, each output by its name.
-using NamedOutputs = std::map<std::string, std::vector<float>>;
-using NamedMachineRun = NamedOutputs (*)(const UniformMap&, const ConstantMap&, const AttributeMap&,
-                                         std::size_t vertex);
-
-template <class T>
-class CollectNamedOutputs {
- public:
-  template <class X>
-  void input(const char*, X&) {}
-  template <class X>
-  void uniform(const char*, X&) {}
-  void constant(const char*, T&) {}
-  template <class X>
-  void output(const char* name, X& variable) {
-    std::vector<float>& values = outputs[name];
-    listings::forEachComponent(variable, [&](T& value) { values.push_back(value.value()); });
-  }
-  NamedOutputs outputs;
-};
-
-template <template <class> class Shader>
-NamedOutputs runNamedOnMachine(const UniformMap& uniforms, const ConstantMap& constants,
-                               const AttributeMap& attributes, std::size_t vertex) {
-  Shader<Adv> shader{};
-  listings::BindUniforms<Adv> bindUniforms(uniforms, constants);
-  shader.visit(bindUniforms);
-  listings::BindVertex<Adv> bindVertex(attributes, vertex);
-  shader.visit(bindVertex);
-  shader.main();
-  CollectNamedOutputs<Adv> outputs;
-  shader.visit(outputs);
-  return outputs.outputs;
+// Every output's components, one after the other.
+std::vector<float> allOf(const NamedOutputs& outputs) {
+  std::vector<float> values;
+  for (const auto& [name, components] : outputs)
+    values.insert(values.end(), components.begin(), components.end());
+  return values;
 }
 
 struct MachineListing {
   std::string name;
   MachineRun run;
-  NamedMachineRun runNamed;
   bool legacy;  // reads fixed-function state derived from the bound matrices
 };
 
@@ -189,7 +170,7 @@ const std::vector<MachineListing>& machineListingTable() {
   static const std::vector<MachineListing> table = [] {
     std::vector<MachineListing> all;
     test::forEachCatalogShader([&]<template <class> class Shader>(const char* name, bool legacy) {
-      all.push_back(MachineListing{name, runOnMachine<Shader>, runNamedOnMachine<Shader>, legacy});
+      all.push_back(MachineListing{name, runOnMachine<Shader>, legacy});
     });
     return all;
   }();
@@ -404,7 +385,8 @@ void checkListing(const ListingInputs& in, PrecisionRules rules, int runs, std::
       const std::uint64_t runSeed =
           seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
       Machine::begin(runSeed, rules);
-      const std::vector<float> values = listing.run(uniforms, in.constants, in.attributes, vertex);
+      const std::vector<float> values =
+          allOf(listing.run(uniforms, in.constants, in.attributes, vertex));
       ++tally.evaluations;
       std::size_t offset = 0;
       for (const OracleVarying& v : varyings) {
@@ -500,12 +482,13 @@ void checkHandWrittenAgainstDerived(const DerivedListingInputs& in, PrecisionRul
       const std::uint64_t runSeed =
           seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
       Machine::begin(runSeed, rules);
-      const NamedOutputs outputs = listing.runNamed(uniforms, b.constants, b.attributes, vertex);
+      const NamedOutputs outputs = listing.run(uniforms, b.constants, b.attributes, vertex);
       ++tally.evaluations;
       for (const OracleVarying& v : varyings) {
         // A capture the hand-written listing names otherwise (or keeps as
         // a local) is not compared.
-        const auto mine = outputs.find(v.name);
+        const auto mine = std::find_if(outputs.begin(), outputs.end(),
+                                       [&](const auto& output) { return output.first == v.name; });
         if (mine == outputs.end()) continue;
         const auto components = static_cast<std::size_t>(v.components);
         if (mine->second.size() != components)
