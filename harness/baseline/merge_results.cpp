@@ -150,6 +150,11 @@ std::vector<CaseResult> mergeResults(const std::vector<ResultsFile>& files,
           listing && !r.listingDigest.empty()) {
         auto [digest, fresh] = digestOf.try_emplace(listing);
         if (fresh) digest->second = listingDigest(*listing);
+        if (r.listingDigest == kListingEditedDuringRun)
+          throw UsageError(fmt::format(
+              "{}: ran {} on {} while {} was being edited, so which text it ran is unknown: run "
+              "that shard again",
+              file.path, r.caseId, r.backend, listing->path.string()));
         if (digest->second != r.listingDigest)
           throw UsageError(fmt::format(
               "{}: ran {} on {} from another text of its listing than {} and its shader files "

@@ -357,6 +357,7 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   // on another catalog by it, a resumed run an edited listing): read once
   // per listing.
   std::map<const Manifest*, std::string> digestOf;
+  std::set<const Manifest*> editedDuringRun;
   for (const Case& c : run.cases)
     if (!digestOf.count(c.manifest)) digestOf[c.manifest] = listingDigest(*c.manifest);
   // One slot per result the run gives, in order: a case already finished in
@@ -475,8 +476,21 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     result.shard = shardLabel;
     result.shardOf = shardOf;
     result.shardCases = shardCases;
-    if (const auto c = caseById.find(result.caseId); c != caseById.end())
-      result.listingDigest = digestOf.at(c->second->manifest);
+    if (const auto c = caseById.find(result.caseId); c != caseById.end()) {
+      // The listing read again as the case ends: a text edited since the
+      // run began may be the one the case compiled, or not.
+      const Manifest* listing = c->second->manifest;
+      result.listingDigest = digestOf.at(listing);
+      if (listingDigest(*listing) != result.listingDigest) {
+        result.listingDigest = kListingEditedDuringRun;
+        if (editedDuringRun.insert(listing).second)
+          printMessage(stderr,
+                       "snell: note: {} was edited while this run was in progress; which text "
+                       "its cases from here on compiled is unknown, so their records say so, "
+                       "and `run --resume` runs them again\n",
+                       listing->path.string());
+      }
+    }
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                  result.caseId, statusName(result.status), result.seconds);
     if (json) json->writeLine(jsonText(toJson(result)));

@@ -13,4 +13,10 @@ namespace snell {
 // itself says why it could not read it).
 std::string listingDigest(const Manifest& manifest);
 
+// What a record carries in place of a digest when its listing was edited
+// while the run was in progress: which text the case compiled is unknown.
+// It matches no digest, so a resumed run runs the case again, and merge
+// and compare say the text differs.
+inline constexpr const char* kListingEditedDuringRun = "edited during the run";
+
 }  // namespace snell

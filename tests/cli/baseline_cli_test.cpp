@@ -365,6 +365,60 @@ std::size_t lineCount(const fs::path& path) {
   return n;
 }
 
+// A listing edited while a run is in progress: a case that ends after the
+// edit may have compiled either text. Its record says so in place of a
+// digest, with a note, and a merge of it is refused.
+TEST(BaselineCli, AListingEditedDuringTheRunIsRecordedAsSuch) {
+  Scratch scratch;
+  const fs::path shaders = fresnelCatalogIn(scratch);
+  const fs::path json = scratch / "r.jsonl";
+  const fs::path err = scratch / "err.txt";
+  // One worker, four cases one after another, each computing its oracle
+  // (no cache): the listing is edited as soon as the first has ended.
+  const pid_t pid =
+      spawnSnell({"run", "--backend", "gl", "-j", "1", "--oracle-cache", "off", "--shaders",
+                  shaders.string(), "--out", (scratch / "out").string(), "--json", json.string()},
+                 err.string());
+  fs::path partial = json;
+  partial += ".partial";
+  std::size_t before = 0;
+  for (int k = 0; k < 30000 && (before = lineCount(partial)) < 1; ++k)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  ASSERT_GE(before, 1u);
+  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
+  const std::size_t after = lineCount(partial);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << readText(err);
+  // One worker: the records are in the order the cases ended. Those that
+  // ended before the edit carry the digest of the text; those after it say
+  // they cannot.
+  const auto finished = records(json);
+  ASSERT_EQ(finished.size(), 4u);
+  ASSERT_LT(after, finished.size()) << "every case ended before the edit";
+  for (std::size_t k = 0; k < before; ++k)
+    EXPECT_EQ(finished[k]["listing_digest"].get<std::string>().size(), 32u) << k;
+  for (std::size_t k = after; k < finished.size(); ++k)
+    EXPECT_EQ(finished[k]["listing_digest"], "edited during the run") << k;
+  const std::string note = readText(err);
+  EXPECT_NE(note.find("was edited while this run was in progress"), std::string::npos) << note;
+  // Its first case ran the text before the edit, and the merge refuses it
+  // for that; a shard of only the later cases is refused for what they say.
+  const Outcome merged = snell(fmt::format("merge {} --shaders {} --json {}", json.string(),
+                                           shaders.string(), (scratch / "m.jsonl").string()));
+  EXPECT_EQ(merged.code, 2) << merged.out;
+  EXPECT_NE(merged.out.find("from another text of its listing"), std::string::npos) << merged.out;
+  std::ofstream(scratch / "later.jsonl") << finished.back().dump() << "\n";
+  const Outcome later =
+      snell(fmt::format("merge {} --shaders {} --json {}", (scratch / "later.jsonl").string(),
+                        shaders.string(), (scratch / "m.jsonl").string()));
+  EXPECT_EQ(later.code, 2) << later.out;
+  EXPECT_NE(later.out.find("so which text it ran is unknown: run that shard again"),
+            std::string::npos)
+      << later.out;
+}
+
 // Listing 14.1's sphere, sweep and torus cases (and the endless listing's
 // sweep), leaving out the stretched scene's.
 constexpr const char* kThreeFresnelCases = "*/[st][pwo]*";
