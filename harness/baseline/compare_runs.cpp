@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/errors.h"
+#include "core/listing_digest.h"
 
 namespace snell {
 namespace {
@@ -74,8 +75,10 @@ RunComparison compareRuns(const RunSide& from, const RunSide& to, const DriftRul
       continue;
     }
     const CaseResult& now = *it->second;
+    // A record of a case that ended while its listing was being edited
+    // ran an unknown text: edited, whatever the other record says.
     if (!old->listingDigest.empty() && !now.listingDigest.empty() &&
-        old->listingDigest != now.listingDigest)
+        (old->listingDigest != now.listingDigest || now.listingDigest == kListingEditedDuringRun))
       c.listingEdited.push_back(key);
     // A flake passes the gate in `run` and `merge`: judged here by the same
     // status, and listed apart.

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -79,13 +80,19 @@ inline CLI::Option* addWholeNumberList(CLI::App& app, const std::string& name,
       start = comma + 1;
     }
   };
-  CLI::Option* option = app.add_option_function<std::string>(
+  // Each value given (the option repeated, or its values apart) is a list;
+  // the lists join, as CLI11's own vectors do.
+  CLI::Option* option = app.add_option(
       name,
-      [&target, items](const std::string& text) {
+      [&target, items](const CLI::results_t& lists) {
         target.clear();
-        for (const std::string& item : items(text)) target.push_back(std::stoi(item));
+        for (const std::string& text : lists)
+          for (const std::string& item : items(text)) target.push_back(std::stoi(item));
+        return true;
       },
       description);
+  option->expected(1, CLI::detail::expected_max_vector_size);
+  option->allow_extra_args();
   option->check(CLI::Validator(
       [what, hint, items](const std::string& text) -> std::string {
         if (text.empty()) return "an empty " + what + "; " + hint + ", or leave the option out";
@@ -95,8 +102,10 @@ inline CLI::Option* addWholeNumberList(CLI::App& app, const std::string& name,
           if (item.empty()) return fmt::format("item {} of `{}` is empty; {}", k + 1, text, hint);
           if (item.find_first_not_of("0123456789") != std::string::npos)
             return fmt::format("`{}` is not a whole number; {}", item, hint);
-          // Nine digits stay inside int; the command's range check says more.
-          if (item.size() > 9) return fmt::format("`{}` is too large; {}", item, hint);
+          // Nine digits stay inside int (leading zeros aside); the
+          // command's range check says more.
+          const std::size_t first = std::min(item.find_first_not_of('0'), item.size() - 1);
+          if (item.size() - first > 9) return fmt::format("`{}` is too large; {}", item, hint);
         }
         return "";
       },

@@ -378,10 +378,16 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
       // is run again: its result is not this listing's.
       if (done != resumed.end() && !done->second.listingDigest.empty() &&
           done->second.listingDigest != digestOf.at(c.manifest)) {
-        printMessage(stderr,
-                     "snell: note: {}: {} on {} ran another text of its listing, which has been "
-                     "edited since; it runs again\n",
-                     options.resume, c.id, backend);
+        if (done->second.listingDigest == kListingEditedDuringRun)
+          printMessage(stderr,
+                       "snell: note: {}: {} on {} ended while its listing was being edited, so "
+                       "which text it ran is unknown; it runs again\n",
+                       options.resume, c.id, backend);
+        else
+          printMessage(stderr,
+                       "snell: note: {}: {} on {} ran another text of its listing, which has "
+                       "been edited since; it runs again\n",
+                       options.resume, c.id, backend);
         resumed.erase(done);
         done = resumed.end();
       }
@@ -457,6 +463,22 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
   std::size_t finished = slots.size() - tasks.size();
   std::map<std::string, const Case*> caseById;
   for (const Case& c : run.cases) caseById[c.id] = &c;
+  // The listing read again as a case (or its rerun) ends: a text edited
+  // since the run began may be the one the case compiled, or not, and the
+  // record says so in place of a digest (the returned flag).
+  const auto markIfEdited = [&](CaseResult& result, const Manifest* listing) {
+    if (result.listingDigest == kListingEditedDuringRun) return true;
+    if (listingDigest(*listing) == digestOf.at(listing)) return false;
+    result.listingDigest = kListingEditedDuringRun;
+    if (editedDuringRun.insert(listing).second)
+      printMessage(stderr,
+                   "snell: note: {} was edited while this run was in progress; which text "
+                   "its cases from here on compiled is unknown, so their records say so, "
+                   "and `run --resume` runs them again\n",
+                   listing->path.string());
+    return true;
+  };
+
   superviseTasks(tasks, supervisor, [&](std::size_t task, const CaseResult& finishedCase) {
     ++finished;
     CaseResult result = finishedCase;
@@ -477,19 +499,8 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     result.shardOf = shardOf;
     result.shardCases = shardCases;
     if (const auto c = caseById.find(result.caseId); c != caseById.end()) {
-      // The listing read again as the case ends: a text edited since the
-      // run began may be the one the case compiled, or not.
-      const Manifest* listing = c->second->manifest;
-      result.listingDigest = digestOf.at(listing);
-      if (listingDigest(*listing) != result.listingDigest) {
-        result.listingDigest = kListingEditedDuringRun;
-        if (editedDuringRun.insert(listing).second)
-          printMessage(stderr,
-                       "snell: note: {} was edited while this run was in progress; which text "
-                       "its cases from here on compiled is unknown, so their records say so, "
-                       "and `run --resume` runs them again\n",
-                       listing->path.string());
-      }
+      result.listingDigest = digestOf.at(c->second->manifest);
+      markIfEdited(result, c->second->manifest);
     }
     printMessage(stderr, "[{}/{}] {} {} {} ({:.2f}s)\n", finished, slots.size(), result.backend,
                  result.caseId, statusName(result.status), result.seconds);
@@ -518,6 +529,16 @@ SuiteRun runSuite(const SuiteOptions& options, bool onlyImageCases, bool compare
     superviseTasks(rerunTasks, supervisor, [&](std::size_t task, const CaseResult& result) {
       printMessage(stderr, "[rerun {}] {} {} {} ({:.2f}s)\n", round + 1, result.backend,
                    result.caseId, statusName(result.status), result.seconds);
+      // A rerun of an edited listing is not counted: its pass would make
+      // a failure of the other text a flake, which the gate lets through.
+      if (const auto c = caseById.find(result.caseId);
+          c != caseById.end() && markIfEdited(*again[task], c->second->manifest)) {
+        printMessage(stderr,
+                     "snell: note: the rerun of {} on {} is not counted: its listing was "
+                     "edited during the run\n",
+                     result.caseId, result.backend);
+        return;
+      }
       again[task]->reruns.push_back(result.status);
     });
     run.interruptedBy = interrupt.signal();

@@ -15,8 +15,8 @@ std::string listingDigest(const Manifest& manifest);
 
 // What a record carries in place of a digest when its listing was edited
 // while the run was in progress: which text the case compiled is unknown.
-// It matches no digest, so a resumed run runs the case again, and merge
-// and compare say the text differs.
+// A resumed run runs the case again, merge refuses its shard, and compare
+// lists it as edited.
 inline constexpr const char* kListingEditedDuringRun = "edited during the run";
 
 }  // namespace snell

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/errors.h"
+#include "core/listing_digest.h"
 
 namespace snell {
 namespace {
@@ -215,6 +216,22 @@ TEST(CompareRuns, AListingEditedBetweenRunsIsNamed) {
             std::string::npos)
       << text.str();
   EXPECT_EQ(comparisonToJson(c)["listing_edited"], nlohmann::json::array({"gl edited"}));
+}
+
+// A case that ended while its listing was being edited ran an unknown
+// text: named as edited even where both records say so.
+TEST(CompareRuns, ARecordOfAnEditDuringTheRunIsNamedAsEdited) {
+  const auto ran = [](const std::string& id, const std::string& digest) {
+    CaseResult r = result(id, "gl", Status::Pass);
+    r.listingDigest = digest;
+    return r;
+  };
+  const RunComparison c = compareRuns(
+      side("a.jsonl", {ran("both", kListingEditedDuringRun), ran("now", "1"), ran("same", "2")}),
+      side("b.jsonl", {ran("both", kListingEditedDuringRun), ran("now", kListingEditedDuringRun),
+                       ran("same", "2")}),
+      DriftRule{});
+  EXPECT_EQ(c.listingEdited, (std::vector<std::string>{"gl both", "gl now"}));
 }
 
 TEST(CompareRuns, BackendHalvesCompareCaseByCase) {

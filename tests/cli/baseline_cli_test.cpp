@@ -381,26 +381,40 @@ TEST(BaselineCli, AListingEditedDuringTheRunIsRecordedAsSuch) {
                  err.string());
   fs::path partial = json;
   partial += ".partial";
-  std::size_t before = 0;
-  for (int k = 0; k < 30000 && (before = lineCount(partial)) < 1; ++k)
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  ASSERT_GE(before, 1u);
-  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
-  const std::size_t after = lineCount(partial);
+  // Until the first case has ended (or the run, if it failed to start).
   int status = 0;
-  waitpid(pid, &status, 0);
+  bool exited = false;
+  std::size_t before = 0;
+  for (int k = 0; k < 30000 && (before = lineCount(partial)) < 1; ++k) {
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ASSERT_GE(before, 1u) << readText(err);
+  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
+  if (!exited) waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << readText(err);
   // One worker: the records are in the order the cases ended. Those that
-  // ended before the edit carry the digest of the text; those after it say
-  // they cannot.
+  // ended before the edit carry the digest of the text (at least the
+  // first); those after it say they cannot, and at least the last one
+  // ended after it (each case computes its oracle: the three after the
+  // first take far longer than the edit).
   const auto finished = records(json);
   ASSERT_EQ(finished.size(), 4u);
-  ASSERT_LT(after, finished.size()) << "every case ended before the edit";
-  for (std::size_t k = 0; k < before; ++k)
-    EXPECT_EQ(finished[k]["listing_digest"].get<std::string>().size(), 32u) << k;
-  for (std::size_t k = after; k < finished.size(); ++k)
-    EXPECT_EQ(finished[k]["listing_digest"], "edited during the run") << k;
+  std::size_t edited = 0;
+  while (edited < finished.size() && finished[edited]["listing_digest"] != "edited during the run")
+    ++edited;
+  EXPECT_GE(edited, before);
+  EXPECT_LT(edited, finished.size()) << "no case ended after the edit";
+  for (std::size_t k = 0; k < finished.size(); ++k) {
+    if (k < edited)
+      EXPECT_EQ(finished[k]["listing_digest"].get<std::string>().size(), 32u) << k;
+    else
+      EXPECT_EQ(finished[k]["listing_digest"], "edited during the run") << k;
+  }
   const std::string note = readText(err);
   EXPECT_NE(note.find("was edited while this run was in progress"), std::string::npos) << note;
   // Its first case ran the text before the edit, and the merge refuses it
@@ -417,6 +431,47 @@ TEST(BaselineCli, AListingEditedDuringTheRunIsRecordedAsSuch) {
   EXPECT_NE(later.out.find("so which text it ran is unknown: run that shard again"),
             std::string::npos)
       << later.out;
+}
+
+// A failure rerun after its listing was edited (here: mended) is no flake
+// of the text that failed: its record says the text is unknown.
+TEST(BaselineCli, ARerunAfterAnEditDuringTheRunIsNoFlake) {
+  Scratch scratch;
+  const fs::path shaders = fresnelCatalogIn(scratch);
+  const fs::path vert = shaders / "fresnel" / "fresnel.vert";
+  const std::string published = readText(vert);
+  std::string broken = published;
+  ASSERT_NE(broken.find("Eta = 0.66"), std::string::npos);
+  broken.replace(broken.find("Eta = 0.66"), 10, "Eta = 0.67");
+  std::ofstream(vert) << broken;
+  const fs::path json = scratch / "r.jsonl";
+  const fs::path err = scratch / "err.txt";
+  const pid_t pid = spawnSnell(
+      {"run", "--backend", "gl", "-j", "1", "--reruns", "1", "--filter", "*/sphere", "--shaders",
+       shaders.string(), "--out", (scratch / "out").string(), "--json", json.string()},
+      err.string());
+  fs::path partial = json;
+  partial += ".partial";
+  int status = 0;
+  bool exited = false;
+  for (int k = 0; k < 30000 && lineCount(partial) < 1; ++k) {
+    if (waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  std::ofstream(vert) << published;
+  if (!exited) waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << readText(err);
+  const auto finished = records(json);
+  ASSERT_EQ(finished.size(), 1u);
+  EXPECT_EQ(finished[0]["status"], "Fail") << readText(err);
+  EXPECT_EQ(finished[0]["listing_digest"], "edited during the run") << readText(err);
+  EXPECT_NE(readText(err).find("is not counted: its listing was edited during the run"),
+            std::string::npos)
+      << readText(err);
 }
 
 // Listing 14.1's sphere, sweep and torus cases (and the endless listing's

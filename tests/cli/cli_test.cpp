@@ -350,7 +350,11 @@ TEST(Cli, OptionsThatMeanNothingAreExit2) {
            {"bench --resolutions 16,abc", "--resolutions: `abc` is not a whole number"},
            {"bench --resolutions ''", "--resolutions: an empty list of sizes"},
            {"bench --resolutions 99999999999", "--resolutions: `99999999999` is too large"},
-           {"bench --tessellations 12,,48", "--tessellations: item 2 of `12,,48` is empty"}}) {
+           {"bench --tessellations 12,,48", "--tessellations: item 2 of `12,,48` is empty"},
+           // Lists given apart join, as before: the sizes are checked together.
+           {"bench --resolutions 64 --resolutions 32",
+            "--resolutions 64,32: give them in increasing order"},
+           {"bench --resolutions 64 32", "--resolutions 64,32: give them in increasing order"}}) {
     const Outcome o = snell(args);
     EXPECT_EQ(o.code, 2) << args << ": " << o.out;
     EXPECT_NE(o.out.find(expected), std::string::npos) << args << ": " << o.out;
