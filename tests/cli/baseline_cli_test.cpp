@@ -365,6 +365,16 @@ std::size_t lineCount(const fs::path& path) {
   return n;
 }
 
+// Waits until the run `pid` has streamed a record to `partial`, or has
+// exited (then true, with its status).
+bool waitForARecord(pid_t pid, const fs::path& partial, int& status) {
+  for (int k = 0; k < 30000 && lineCount(partial) < 1; ++k) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
+}
+
 // A listing edited while a run is in progress: a case that ends after the
 // edit may have compiled either text. Its record says so in place of a
 // digest, with a note, and a merge of it is refused.
@@ -383,15 +393,8 @@ TEST(BaselineCli, AListingEditedDuringTheRunIsRecordedAsSuch) {
   partial += ".partial";
   // Until the first case has ended (or the run, if it failed to start).
   int status = 0;
-  bool exited = false;
-  std::size_t before = 0;
-  for (int k = 0; k < 30000 && (before = lineCount(partial)) < 1; ++k) {
-    if (waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
+  const bool exited = waitForARecord(pid, partial, status);
+  const std::size_t before = lineCount(partial);
   ASSERT_GE(before, 1u) << readText(err);
   std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
   if (!exited) waitpid(pid, &status, 0);
@@ -453,14 +456,7 @@ TEST(BaselineCli, ARerunAfterAnEditDuringTheRunIsNoFlake) {
   fs::path partial = json;
   partial += ".partial";
   int status = 0;
-  bool exited = false;
-  for (int k = 0; k < 30000 && lineCount(partial) < 1; ++k) {
-    if (waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
+  const bool exited = waitForARecord(pid, partial, status);
   std::ofstream(vert) << published;
   if (!exited) waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
