@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
+#include "oracle/refract_on_points.h"
 
 namespace snell {
 namespace {
@@ -30,7 +31,7 @@ glsl::vec<T, Size> evaluate(Builtin fn, const BuiltinCall& call) {
 }
 
 template <int Size>
-BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
+BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road) {
   // The exact value along the path the double evaluation takes itself.
   thread_local std::vector<bool> ownPath;
   ownPath.clear();
@@ -43,6 +44,24 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call) {
   for (int k = 0; k < Size; ++k) {
     result.value.push_back(value[k]);
     result.strict.push_back(strict[k]);
+  }
+  // Exact inputs of refract: the same bounds by the shorter road where it
+  // answers (one way, the exact evaluation's own).
+  PointRefract onPoints;
+  if (road == OracleRoad::Shortest && fn == Builtin::Refract && ownPath.size() == 1 &&
+      refractOnPoints(call.I, call.N, call.eta, ownPath[0], currentPrecisionRules(), onPoints)) {
+    BuiltinWay way;
+    way.value = result.value;
+    for (int k = 0; k < Size; ++k) {
+      way.lo.push_back(onPoints.lo[k]);
+      way.hi.push_back(onPoints.hi[k]);
+      way.undefined.push_back(false);
+    }
+    result.lo = way.lo;
+    result.hi = way.hi;
+    result.undefined = way.undefined;
+    result.ways.push_back(std::move(way));
+    return result;
   }
   // Every way an undecidable branch may go, each with the exact value along
   // it. The explorer is kept per thread: its outcome lists keep their
@@ -120,7 +139,7 @@ const BuiltinWay& BuiltinResult::nearestWay(std::span<const float> vector) const
   });
 }
 
-BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules) {
+BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules, OracleRoad road) {
   const UsePrecisionRules applied(rules);
   const Builtin fn = parseBuiltin(call.fn);
   if (call.I.size() != call.N.size()) {
@@ -129,13 +148,13 @@ BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules) {
   }
   switch (call.I.size()) {
     case 1:
-      return evaluateSized<1>(fn, call);
+      return evaluateSized<1>(fn, call, road);
     case 2:
-      return evaluateSized<2>(fn, call);
+      return evaluateSized<2>(fn, call, road);
     case 3:
-      return evaluateSized<3>(fn, call);
+      return evaluateSized<3>(fn, call, road);
     case 4:
-      return evaluateSized<4>(fn, call);
+      return evaluateSized<4>(fn, call, road);
     default:
       throw UsageError(fmt::format("{}: I and N have {} components; GLSL allows 1 to 4", call.fn,
                                    call.I.size()));

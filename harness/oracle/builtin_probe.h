@@ -36,7 +36,14 @@ struct BuiltinResult {
   const BuiltinWay& nearestWay(std::span<const float> vector) const;
 };
 
+// The road to the bounds: the shortest one that gives the general road's
+// bits (refract on exact inputs: oracle/refract_on_points.h), or the
+// general road alone, for the tests and benchmarks that hold the two side
+// by side.
+enum class OracleRoad { Shortest, General };
+
 // Throws UsageError for an unknown fn or mismatched lengths.
-BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules = PrecisionRules::Glsl);
+BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules = PrecisionRules::Glsl,
+                              OracleRoad road = OracleRoad::Shortest);
 
 }  // namespace snell

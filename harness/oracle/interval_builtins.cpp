@@ -9,6 +9,7 @@
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
 #include "oracle/interval_region_bounds.h"
+#include "oracle/interval_tree_sum.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -212,44 +213,13 @@ Interval abs(const Interval& xIn) {
   return leafValue(lo, magnitude(x), idealLo, idealMagnitude(x), x.err);
 }
 
-namespace {
-
-// The sum of n <= 4 closed products in every order: the roundings of the
-// sum before the last one happen at partial sums of subsets of the terms;
-// the largest total over every tree shape bounds them all. `partial[mask]`
-// bounds |partial sum| over the terms in the mask.
-double worstTreeRounding(const double* partial, std::size_t n) {
-  const auto err = [&](unsigned mask) {
-    return float_sets::roundingError(-partial[mask], partial[mask]);
-  };
-  if (n <= 2) return 0.0;
-  if (n == 3) return std::max({err(0b011), err(0b101), err(0b110)});
-  // n == 4: a pair inside a triple, or two disjoint pairs.
-  double worst = 0.0;
-  // The masks of two terms out of four, in increasing order.
-  constexpr unsigned kPairs[] = {0b0011u, 0b0101u, 0b0110u, 0b1001u, 0b1010u, 0b1100u};
-  for (unsigned triple : {0b0111u, 0b1011u, 0b1101u, 0b1110u})
-    for (unsigned pair : kPairs)
-      if ((pair & triple) == pair) worst = std::max(worst, err(pair) + err(triple));
-  for (unsigned pair : {0b0011u, 0b0101u, 0b1001u})
-    worst = std::max(worst, err(pair) + err(0b1111u ^ pair));
-  return worst;
-}
-
-}  // namespace
-
 Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b) {
   assert(a.size() == b.size() && !a.empty());
   const std::size_t n = a.size();
   // Of each product, what the bound by trees below needs: its ideal range
   // and the error it carries from its operands (a dot product or a matrix
   // row has at most four terms; past four the bound is not made).
-  struct Term {
-    double idealLo;
-    double idealHi;
-    double propagated;
-  };
-  std::array<Term, 4> products;
+  std::array<ClosedProduct, 4> products;
   Interval sum;
   for (std::size_t i = 0; i < n; ++i) {
     const Interval p = a[i] * b[i];
@@ -264,30 +234,7 @@ Interval sumOfProducts(std::span<const Interval> a, std::span<const Interval> b)
     if (a[i].region.kind != IntervalRegion::Kind::Leaf ||
         b[i].region.kind != IntervalRegion::Kind::Leaf)
       return sum;
-  std::array<double, 4> termError{};
-  for (std::size_t i = 0; i < n; ++i) {
-    const Term& p = products[i];
-    // Its operands' errors, then its one rounding (or none, fused).
-    termError[i] = up(p.propagated + float_sets::roundingError(p.idealLo - p.propagated,
-                                                               p.idealHi + p.propagated));
-  }
-  // Only the masks of one term or more are read.
-  std::array<double, 16> partial;
-  const unsigned masks = 1u << n;
-  for (unsigned mask = 1; mask < masks; ++mask) {
-    double lo = 0.0, hi = 0.0, error = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      if (!(mask & (1u << i))) continue;
-      lo += products[i].idealLo;
-      hi += products[i].idealHi;
-      error += termError[i];
-    }
-    // (1 + 4u) for the roundings of smaller partial sums inside this one.
-    partial[mask] = up((std::max(std::fabs(lo), std::fabs(hi)) + error) * (1.0 + 0x1p-21));
-  }
-  double pending = 0.0;
-  for (std::size_t i = 0; i < n; ++i) pending += termError[i];
-  pending = up(pending + worstTreeRounding(partial.data(), n));
+  const double pending = treeSumPending(products.data(), n);
   if (!(pending < sum.err)) return sum;
   float_sets::Range set = float_sets::roundedAround({sum.idealLo, sum.idealHi}, pending);
   set = float_sets::admitFlushToZero(set);

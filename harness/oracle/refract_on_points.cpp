@@ -1,0 +1,402 @@
+#include "oracle/refract_on_points.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+#include "oracle/fp32.h"
+#include "oracle/fp32_bits.h"
+#include "oracle/interval_float_sets.h"
+#include "oracle/interval_region_bounds.h"
+#include "oracle/interval_tree_sum.h"
+
+namespace snell {
+namespace {
+
+using float_sets::Range;
+using float_sets::up;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Inputs up to 2^16 keep refract's largest monomials (degree 6 in k) below
+// 2^96: no intermediate error this road leaves out can be infinite.
+constexpr double kLargestInput = 0x1p16;
+
+// Each name below mirrors one piece of interval.cpp or
+// interval_builtins.cpp; the comment names it.
+
+// What an open operand (a product or sum its consumer may regroup) hands
+// its consumer: its ideal range and its region. Its float set and error
+// are never read there, so they are not made.
+struct Open {
+  Range ideal;
+  IntervalRegion region;
+};
+
+// A value its consumers take closed: its float set, ideal range and error.
+struct Closed {
+  Range set;
+  Range ideal;
+  double err;
+};
+
+// interval.cpp's ClosedParts: an operand as an operation sees it.
+struct Parts {
+  Range ideal;
+  double err;
+  IntervalRegion region;
+};
+
+double maxAbs(Range r) { return std::max(std::fabs(r.lo), std::fabs(r.hi)); }
+
+// interval_builtins.cpp's below() and above().
+double below(double x) { return x - std::fabs(x) * 0x1p-50; }
+double above(double x) { return x + std::fabs(x) * 0x1p-50; }
+
+// closedParts() of a value that is not a constant expression.
+Parts closedParts(const Closed& v, PrecisionRules rules) {
+  const bool setIsTighter = rules == PrecisionRules::Glsl && std::isfinite(v.set.lo) &&
+                            std::isfinite(v.set.hi) &&
+                            v.set.hi - v.set.lo <= (v.ideal.hi - v.ideal.lo) + 2.0 * v.err;
+  Parts parts{v.ideal, v.err, {}};
+  if (setIsTighter) {
+    parts.ideal = v.set;
+    parts.err = 0.0;
+  }
+  parts.region = leafRegion(maxAbs(parts.ideal), parts.err, false);
+  return parts;
+}
+
+// closedParts() of an input (Interval::point of a float that is neither
+// NaN nor a denormal), under either rules.
+Parts pointParts(double x) { return {{x, x}, 0.0, leafRegion(std::fabs(x), 0.0, false)}; }
+
+// closedParts() of the literal 1.0: a constant power of two.
+Parts oneParts() { return {{1.0, 1.0}, 0.0, leafRegion(1.0, 0.0, true)}; }
+
+Parts openParts(const Open& v) { return {v.ideal, 0.0, v.region}; }
+
+Open negated(const Open& v) { return {{-v.ideal.hi, -v.ideal.lo}, v.region}; }
+
+// exactPointProductInto(), as far as an open consumer reads it.
+Open pointProduct(double x, double y) {
+  return {
+      float_sets::exactProductRange(x, x, y, y),
+      productRegion(leafRegion(std::fabs(x), 0.0, false), leafRegion(std::fabs(y), 0.0, false))};
+}
+
+// combineInto()'s region, ideal range and pending error. False where the
+// general road gives an unconstrained value.
+struct Combined {
+  Range ideal;
+  IntervalRegion region;
+  double pending;
+};
+template <bool add>
+bool combine(const Parts& a, const Parts& b, PrecisionRules rules, Combined& c) {
+  c.region = add ? sumRegion(a.region, b.region) : productRegion(a.region, b.region);
+  if (mayOverflowInside(c.region)) return false;
+  c.ideal = add ? float_sets::exactSumRange(a.ideal.lo, a.ideal.hi, b.ideal.lo, b.ideal.hi)
+                : float_sets::exactProductRange(a.ideal.lo, a.ideal.hi, b.ideal.lo, b.ideal.hi);
+  c.pending = pendingError(c.region, rules);
+  return true;
+}
+
+// errUnlessOverflowed().
+double errUnlessOverflowed(Range ideal, double err) {
+  return maxAbs(ideal) + err > kFp32Max ? kInf : err;
+}
+
+// combineInto()'s last steps for an operation with an open operand (no
+// plain interval to intersect): its set, and writeResult(). False where
+// the general road gives an unconstrained value or an unbounded error.
+bool closedResult(const Combined& c, Closed& r) {
+  const Range set = float_sets::roundedAround(c.ideal, c.pending);
+  if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return false;
+  r.set = float_sets::admitFlushToZero(set);
+  r.ideal = c.ideal;
+  r.err = errUnlessOverflowed(
+      c.ideal,
+      c.pending + float_sets::roundingError(c.ideal.lo - c.pending, c.ideal.hi + c.pending));
+  return std::isfinite(r.err);
+}
+
+// leafValue().
+bool leafValue(Range set, Range ideal, double err, Closed& r) {
+  if (!std::isfinite(err) || std::isnan(set.lo) || std::isnan(set.hi) || std::isnan(ideal.lo) ||
+      std::isnan(ideal.hi))
+    return false;
+  r.set = float_sets::admitFlushToZero(set);
+  r.ideal = ideal;
+  r.err = errUnlessOverflowed(ideal, err);
+  return std::isfinite(r.err);
+}
+
+// sumOfProducts(N, I) for n = 2 to 4 exact inputs: the sum region, then
+// for three or four terms the bound by tree shapes.
+struct Dot {
+  Closed value;
+  IntervalRegion region;
+};
+bool dotOfPoints(std::span<const float> N, std::span<const float> I, PrecisionRules rules, Dot& d) {
+  const std::size_t n = N.size();
+  std::array<Open, 4> products;
+  for (std::size_t i = 0; i < n; ++i) products[i] = pointProduct(N[i], I[i]);
+  Open sum = products[0];
+  Combined c{};
+  for (std::size_t i = 1; i < n; ++i) {
+    if (!combine<true>(openParts(sum), openParts(products[i]), rules, c)) return false;
+    sum = {c.ideal, c.region};
+  }
+  if (!closedResult(c, d.value)) return false;
+  d.region = sum.region;
+  if (n < 3) return true;
+  std::array<ClosedProduct, 4> closed{};
+  for (std::size_t i = 0; i < n; ++i) {
+    const Open& p = products[i];
+    closed[i] = {p.ideal.lo, p.ideal.hi, p.region.mag - p.region.mag0};
+  }
+  const double pending = treeSumPending(closed.data(), n);
+  Closed& v = d.value;
+  if (!(pending < v.err)) return true;
+  const Range set =
+      float_sets::admitFlushToZero(float_sets::roundedAround({v.ideal.lo, v.ideal.hi}, pending));
+  v.set.lo = std::max(v.set.lo, set.lo);
+  v.set.hi = std::min(v.set.hi, set.hi);
+  v.err = std::min(v.err,
+                   pending + float_sets::roundingError(v.ideal.lo - pending, v.ideal.hi + pending));
+  return true;
+}
+
+// inversesqrt() of Interval(lo, hi), 0 < lo.
+bool inversesqrtOfRange(double lo, double hi, Closed& r) {
+  const double highest = above(1.0 / std::sqrt(lo));
+  const double lowest = below(1.0 / std::sqrt(hi));
+  const Range set = float_sets::withinUlps(lowest, highest, 2.0);
+  const double m = lo;
+  const double propagated = 0.0 / (2.0 * m * std::sqrt(m));
+  const double own = 2.0 * fp32_bits::gapAbove(highest);
+  return leafValue(set, {lowest, highest}, up(up(propagated) + own), r);
+}
+
+// symmetricAboutIdeal() of a value with a finite error: Vulkan's
+// [x - E, x + E] for a built-in whose precision is inherited.
+void makeSymmetric(Closed& v) {
+  const Range symmetric = float_sets::floatsIn(v.ideal.lo - v.err, v.ideal.hi + v.err);
+  v.set.lo = std::min(v.set.lo, symmetric.lo);
+  v.set.hi = std::max(v.set.hi, symmetric.hi);
+}
+
+// 1.0 / b, as sqrt's formula divides (operator/ and divided()): the float
+// set only, which is all sqrt() reads of it. Under Vulkan the quotient may
+// also be the reciprocal times the dividend, an alternative.
+template <PrecisionRules rules>
+bool reciprocalSet(const Closed& bIn, Range& out) {
+  const Parts b = closedParts(bIn, rules);
+  const Range bSet = bIn.set;
+  if (bSet.lo <= 0.0 && bSet.hi >= 0.0) return false;
+  const double smallest = std::min(std::fabs(bSet.lo), std::fabs(bSet.hi));
+  const double largest = maxAbs(bSet);
+  if (smallest < 0x1p-126 || largest > 0x1p126) return false;
+  if (b.ideal.lo <= 0.0 && b.ideal.hi >= 0.0) return false;
+  const Range quotients = float_sets::quotientRange(1.0, 1.0, bSet.lo, bSet.hi);
+  Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
+  const bool setsAreIdeal = fp32_bits::bitsOf(bSet.lo) == fp32_bits::bitsOf(b.ideal.lo) &&
+                            fp32_bits::bitsOf(bSet.hi) == fp32_bits::bitsOf(b.ideal.hi);
+  const Range ideal =
+      setsAreIdeal ? quotients : float_sets::quotientRange(1.0, 1.0, b.ideal.lo, b.ideal.hi);
+  const double idealSmallest = std::min(std::fabs(b.ideal.lo), std::fabs(b.ideal.hi));
+  const double propagated = (0.0 * maxAbs(b.ideal) + 1.0 * b.err) / (smallest * idealSmallest);
+  double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients)) +
+               float_sets::flushError(quotients.lo, quotients.hi);
+  if constexpr (rules == PrecisionRules::Vulkan) {
+    // The dividend is 1: the reciprocal is the quotient itself.
+    const Range reciprocal = set;
+    const Range products = float_sets::roundedProduct(1.0, 1.0, reciprocal.lo, reciprocal.hi);
+    if (std::isnan(products.lo) || std::isnan(products.hi)) return false;
+    set.lo = std::min(set.lo, products.lo);
+    set.hi = std::max(set.hi, products.hi);
+    const double viaReciprocal = 1.0 * (2.5 * fp32_bits::gapAbove(maxAbs(quotients)) +
+                                        float_sets::flushError(reciprocal.lo, reciprocal.hi)) +
+                                 float_sets::roundingError(products.lo, products.hi);
+    own = std::max(own, up(viaReciprocal));
+  }
+  Closed direct{};
+  if (!leafValue(set, ideal, up(propagated + own), direct)) return false;
+  out = direct.set;
+  if constexpr (rules == PrecisionRules::Vulkan) {
+    // withAlternative(direct, 1.0 * direct): the product of the input 1.0
+    // (not a literal) and the closed quotient, one order only.
+    const Parts one{{1.0, 1.0}, 0.0, leafRegion(1.0, 0.0, false)};
+    const Parts q = closedParts(direct, rules);
+    Combined c{};
+    if (!combine<false>(one, q, rules, c)) return false;
+    Range product = float_sets::roundedAround(c.ideal, c.pending);
+    const bool productSetsAreIdeal =
+        fp32_bits::bitsOf(direct.set.lo) == fp32_bits::bitsOf(q.ideal.lo) &&
+        fp32_bits::bitsOf(direct.set.hi) == fp32_bits::bitsOf(q.ideal.hi) &&
+        !std::isnan(c.ideal.lo) && !std::isnan(c.ideal.hi);
+    const Range plain =
+        productSetsAreIdeal
+            ? Range{fp32_bits::floatAtOrBelow(c.ideal.lo), fp32_bits::floatAtOrAbove(c.ideal.hi)}
+            : float_sets::roundedProduct(1.0, 1.0, direct.set.lo, direct.set.hi);
+    product.lo = std::max(product.lo, plain.lo);
+    product.hi = std::min(product.hi, plain.hi);
+    if (std::isnan(product.lo) || std::isnan(product.hi) || product.lo > product.hi) return false;
+    product = float_sets::admitFlushToZero(product);
+    out.lo = std::min(out.lo, product.lo);
+    out.hi = std::max(out.hi, product.hi);
+  }
+  return true;
+}
+
+// sqrt() of a closed value whose float set is at or above 0.
+template <PrecisionRules rules>
+bool sqrtOf(const Closed& xIn, Closed& r) {
+  const Parts x = closedParts(xIn, rules);
+  const Range xSet = xIn.set;
+  if (xSet.lo < 0.0) return false;
+  if (xSet.hi <= 0.0) {
+    r = {{0.0, 0.0}, {0.0, 0.0}, 0.0};  // Interval::point(0.0f)
+    return true;
+  }
+  Closed inverse{};
+  Range root{};
+  if (!inversesqrtOfRange(std::max(xSet.lo, kFp32MinDenormal), xSet.hi, inverse) ||
+      !reciprocalSet<rules>(inverse, root))
+    return false;
+  const double lo = xSet.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
+  const double m = std::max(0.0, std::min(xSet.lo, x.ideal.lo));
+  const double propagated =
+      m > 0.0 ? std::min(std::sqrt(x.err), x.err / (2.0 * std::sqrt(m))) : std::sqrt(x.err);
+  const double sMax = above(std::sqrt(xSet.hi));
+  const double delta = 0x1p-22;
+  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * fp32_bits::gapAbove(root.hi) +
+                        float_sets::flushError(lo, root.hi));
+  if (!leafValue({lo, root.hi},
+                 {below(std::sqrt(std::max(0.0, x.ideal.lo))),
+                  above(std::sqrt(std::max(0.0, x.ideal.hi)))},
+                 up(up(propagated) + own), r))
+    return false;
+  if constexpr (rules == PrecisionRules::Vulkan) makeSymmetric(r);
+  return true;
+}
+
+// An operand that is a sum (d, w, t) as a product takes it: closed under
+// the GLSL rules (no distributivity); under Vulkan open, unless the
+// product's monomials would pass the distribution budget and it has
+// several terms.
+template <PrecisionRules rules>
+Parts sumAsFactor(const Closed& v, const IntervalRegion& region, int otherTerms) {
+  if constexpr (rules == PrecisionRules::Glsl) {
+    return closedParts(v, rules);
+  } else {
+    const bool overBudget =
+        static_cast<double>(region.terms) * otherTerms > kVulkanDistributionTerms;
+    if (overBudget && region.terms > 1) return closedParts(v, rules);
+    return {v.ideal, v.err, region};
+  }
+}
+
+// glsl::refract(), n = 2 to 4. Flattened: GCC at -O2 kept pendingError,
+// roundedAround and exactProductRange as calls, a third of the time.
+template <PrecisionRules rules>
+[[gnu::flatten]] bool refractWith(std::span<const float> I, std::span<const float> N, float eta,
+                                  bool exactTotalInternalReflection, PointRefract& out) {
+  const double e = eta;
+  // d = dot(N, I), a sum. (Vulkan's inherited() widens its set, which no
+  // consumer below reads: each takes its ideal range and error.)
+  Dot dot{};
+  if (!dotOfPoints(N, I, rules, dot)) return false;
+  // k = 1.0 - eta * eta * (1.0 - d * d)
+  Combined c{};
+  const Parts dFactor = sumAsFactor<rules>(dot.value, dot.region, dot.region.terms);
+  if (!combine<false>(dFactor, dFactor, rules, c)) return false;
+  const Open dd{c.ideal, c.region};
+  Closed w{};
+  if (!combine<true>(oneParts(), openParts(negated(dd)), rules, c) || !closedResult(c, w))
+    return false;
+  const Open ee = pointProduct(e, e);
+  if (!combine<false>(openParts(ee), sumAsFactor<rules>(w, c.region, ee.region.terms), rules, c))
+    return false;
+  const Open m{c.ideal, c.region};
+  Closed k{};
+  if (!combine<true>(oneParts(), openParts(negated(m)), rules, c) || !closedResult(c, k))
+    return false;
+  // if (k < 0.0): known only where every allowed value agrees, and the way
+  // the exact evaluation took.
+  const bool negative = k.set.hi < 0.0;
+  if (!negative && !(k.set.lo >= 0.0)) return false;
+  if (negative != exactTotalInternalReflection) return false;
+  const std::size_t n = I.size();
+  out.totalInternalReflection = negative;
+  if (negative) {
+    for (std::size_t i = 0; i < n; ++i) out.lo[i] = out.hi[i] = 0.0;
+    return true;
+  }
+  // max(k, 0.0): its operands closed, the literal 0.0 exactly 0.
+  const Parts kParts = closedParts(k, rules);
+  Closed kMax{};
+  if (!leafValue({std::max(k.set.lo, 0.0), std::max(k.set.hi, 0.0)},
+                 {std::max(kParts.ideal.lo, 0.0), std::max(kParts.ideal.hi, 0.0)},
+                 std::max(kParts.err, 0.0), kMax))
+    return false;
+  Closed root{};
+  if (!sqrtOf<rules>(kMax, root)) return false;
+  // eta * d + sqrt(k), the product open in the sum.
+  const Parts eParts = pointParts(e);
+  if (!combine<false>(eParts, sumAsFactor<rules>(dot.value, dot.region, eParts.region.terms), rules,
+                      c))
+    return false;
+  const Open ed{c.ideal, c.region};
+  Closed t{};
+  if (!combine<true>(openParts(ed), closedParts(root, rules), rules, c) || !closedResult(c, t))
+    return false;
+  const IntervalRegion tRegion = c.region;
+  // eta * I - t * N, each component a sum of two open products.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Parts nParts = pointParts(N[i]);
+    if (!combine<false>(sumAsFactor<rules>(t, tRegion, nParts.region.terms), nParts, rules, c))
+      return false;
+    const Open tN{c.ideal, c.region};
+    Closed r{};
+    if (!combine<true>(openParts(pointProduct(e, I[i])), openParts(negated(tN)), rules, c))
+      return false;
+    if constexpr (rules == PrecisionRules::Glsl) {
+      // The set alone: the error is not read.
+      const Range set = float_sets::roundedAround(c.ideal, c.pending);
+      if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return false;
+      r.set = float_sets::admitFlushToZero(set);
+    } else {
+      // inherited(): symmetric about the ideal value.
+      if (!closedResult(c, r)) return false;
+      makeSymmetric(r);
+    }
+    out.lo[i] = r.set.lo;
+    out.hi[i] = r.set.hi;
+  }
+  return true;
+}
+
+// An input this road mirrors: a float that Interval::point takes as
+// itself (not NaN, not a denormal), small enough that no product or sum
+// of refract's can reach past the float range.
+bool mirrorable(float x) {
+  const double a = std::fabs(static_cast<double>(x));
+  return a == 0.0 || (a >= kFp32MinNormal && a <= kLargestInput);
+}
+
+}  // namespace
+
+bool refractOnPoints(std::span<const float> I, std::span<const float> N, float eta,
+                     bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out) {
+  if (I.size() != N.size() || I.size() < 2 || I.size() > 4 || !mirrorable(eta)) return false;
+  for (std::size_t i = 0; i < I.size(); ++i)
+    if (!mirrorable(I[i]) || !mirrorable(N[i])) return false;
+  if (rules == PrecisionRules::Vulkan)
+    return refractWith<PrecisionRules::Vulkan>(I, N, eta, exactTotalInternalReflection, out);
+  return refractWith<PrecisionRules::Glsl>(I, N, eta, exactTotalInternalReflection, out);
+}
+
+}  // namespace snell
