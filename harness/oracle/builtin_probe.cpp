@@ -9,7 +9,7 @@
 #include "core/errors.h"
 #include "oracle/branch_paths.h"
 #include "oracle/glsl/glsl.h"
-#include "oracle/refract_on_points.h"
+#include "oracle/point_builtins.h"
 
 namespace snell {
 namespace {
@@ -30,6 +30,35 @@ glsl::vec<T, Size> evaluate(Builtin fn, const BuiltinCall& call) {
   return glsl::refract(I, N, glsl::fromFloat<T>(call.eta));
 }
 
+// The call's one way from oracle/point_builtins.h, where it answers.
+template <int Size>
+bool onPoints(Builtin fn, const BuiltinCall& call, const std::vector<bool>& ownPath,
+              BuiltinResult& result) {
+  PointBounds bounds;
+  if (fn == Builtin::Reflect) {
+    if (!ownPath.empty() || !reflectOnPoints(call.I, call.N, currentPrecisionRules(), bounds))
+      return false;
+  } else {
+    PointRefract refract;
+    if (ownPath.size() != 1 ||
+        !refractOnPoints(call.I, call.N, call.eta, ownPath[0], currentPrecisionRules(), refract))
+      return false;
+    bounds = refract;
+  }
+  BuiltinWay way;
+  way.value = result.value;
+  for (int k = 0; k < Size; ++k) {
+    way.lo.push_back(bounds.lo[k]);
+    way.hi.push_back(bounds.hi[k]);
+    way.undefined.push_back(false);
+  }
+  result.lo = way.lo;
+  result.hi = way.hi;
+  result.undefined = way.undefined;
+  result.ways.push_back(std::move(way));
+  return true;
+}
+
 template <int Size>
 BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road) {
   // The exact value along the path the double evaluation takes itself.
@@ -45,24 +74,9 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
     result.value.push_back(value[k]);
     result.strict.push_back(strict[k]);
   }
-  // Exact inputs of refract: the same bounds by the shorter road where it
-  // answers (one way, the exact evaluation's own).
-  PointRefract onPoints;
-  if (road == OracleRoad::Shortest && fn == Builtin::Refract && ownPath.size() == 1 &&
-      refractOnPoints(call.I, call.N, call.eta, ownPath[0], currentPrecisionRules(), onPoints)) {
-    BuiltinWay way;
-    way.value = result.value;
-    for (int k = 0; k < Size; ++k) {
-      way.lo.push_back(onPoints.lo[k]);
-      way.hi.push_back(onPoints.hi[k]);
-      way.undefined.push_back(false);
-    }
-    result.lo = way.lo;
-    result.hi = way.hi;
-    result.undefined = way.undefined;
-    result.ways.push_back(std::move(way));
-    return result;
-  }
+  // Exact inputs: the same bounds by the shorter road where it answers
+  // (one way, the exact evaluation's own).
+  if (road == OracleRoad::Shortest && onPoints<Size>(fn, call, ownPath, result)) return result;
   // Every way an undecidable branch may go, each with the exact value along
   // it. The explorer is kept per thread: its outcome lists keep their
   // memory from one call to the next.

@@ -37,7 +37,7 @@ struct BuiltinResult {
 };
 
 // The road to the bounds: the shortest one that gives the general road's
-// bits (refract on exact inputs: oracle/refract_on_points.h), or the
+// bits (refract on exact inputs: oracle/point_builtins.h), or the
 // general road alone, for the tests and benchmarks that hold the two side
 // by side.
 enum class OracleRoad { Shortest, General };

@@ -2,7 +2,7 @@
 // The bound on a sum of three or four closed products over every order and
 // tree shape an implementation may add them in: sumOfProducts()'s
 // tightening of a dot product, shared with refract's shorter road
-// (refract_on_points.cpp). Inline: both call it once per dot product.
+// (point_builtins.cpp). Inline: both call it once per dot product.
 // Internal to the oracle library.
 #include <algorithm>
 #include <array>

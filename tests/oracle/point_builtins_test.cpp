@@ -1,8 +1,8 @@
-// refract() on exact inputs takes a shorter road to its bounds
-// (oracle/refract_on_points.h). It must give the general road's bits in
-// every field of every answer, and answer most calls, or it is not worth
-// its place.
-#include "oracle/refract_on_points.h"
+// reflect() and refract() on exact inputs take a shorter road to their
+// bounds (oracle/point_builtins.h). It must give the general road's bits
+// in every field of every answer, and answer most calls, or it is not
+// worth its place.
+#include "oracle/point_builtins.h"
 
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
@@ -28,7 +28,7 @@ constexpr PrecisionRules kRules[] = {PrecisionRules::Glsl, PrecisionRules::Vulka
 std::uint64_t bitsOf(double x) { return std::bit_cast<std::uint64_t>(x); }
 
 std::string describe(const BuiltinCall& call, PrecisionRules rules) {
-  std::string text = std::string(precisionRulesName(rules)) + " I=(";
+  std::string text = call.fn + " " + std::string(precisionRulesName(rules)) + " I=(";
   for (float x : call.I) text += std::to_string(x) + " ";
   text += ") N=(";
   for (float x : call.N) text += std::to_string(x) + " ";
@@ -69,6 +69,11 @@ void expectSameAnswer(const BuiltinResult& shortest, const BuiltinResult& genera
 // Whether the shorter road answers the call (with the exact evaluation's
 // branch, as evaluateBuiltin gives it).
 bool shortRoadAnswers(const BuiltinCall& call, PrecisionRules rules) {
+  if (call.fn == "reflect") {
+    const UsePrecisionRules applied(rules);
+    PointBounds out;
+    return reflectOnPoints(call.I, call.N, rules, out);
+  }
   const auto exactTir = [&]<int Size>() {
     glsl::vec<double, Size> I, N;
     for (int k = 0; k < Size; ++k) {
@@ -103,16 +108,16 @@ class RandomCalls {
  public:
   explicit RandomCalls(unsigned seed) : random_(seed) {}
 
-  BuiltinCall next(std::size_t size) {
+  BuiltinCall next(const std::string& fn, std::size_t size) {
     BuiltinCall call;
-    call.fn = "refract";
+    call.fn = fn;
     call.N = unit(size);
     call.I = unit(size);
     double along = 0.0;
     for (std::size_t k = 0; k < size; ++k) along += call.I[k] * call.N[k];
     if (along > 0.0 && coin_(random_) > 0.05)
       for (float& x : call.I) x = -x;
-    call.eta = eta_(random_);
+    if (fn == "refract") call.eta = eta_(random_);
     return call;
   }
 
@@ -138,29 +143,32 @@ class RandomCalls {
   std::uniform_real_distribution<double> coin_{0.0, 1.0};
 };
 
-TEST(RefractOnPoints, GivesTheGeneralRoadsBitsOnRandomCalls) {
+TEST(PointBuiltins, GiveTheGeneralRoadsBitsOnRandomCalls) {
   RandomCalls calls(20261129);
-  for (PrecisionRules rules : kRules)
-    for (std::size_t size = 2; size <= 4; ++size) {
-      constexpr int kCalls = 6000;
-      int answered = 0;
-      for (int c = 0; c < kCalls; ++c) {
-        const BuiltinCall call = calls.next(size);
-        const std::string where = describe(call, rules);
-        expectSameAnswer(evaluateBuiltin(call, rules),
-                         evaluateBuiltin(call, rules, OracleRoad::General), where);
-        if (shortRoadAnswers(call, rules)) ++answered;
-        if (HasFailure()) return;
+  for (const std::string fn : {"reflect", "refract"})
+    for (PrecisionRules rules : kRules)
+      for (std::size_t size = 2; size <= 4; ++size) {
+        constexpr int kCalls = 6000;
+        int answered = 0;
+        for (int c = 0; c < kCalls; ++c) {
+          const BuiltinCall call = calls.next(fn, size);
+          const std::string where = describe(call, rules);
+          expectSameAnswer(evaluateBuiltin(call, rules),
+                           evaluateBuiltin(call, rules, OracleRoad::General), where);
+          if (shortRoadAnswers(call, rules)) ++answered;
+          if (HasFailure()) return;
+        }
+        // Declining is always right; declining most calls would make the
+        // road pointless (refract declines an undecidable branch: about 1%
+        // here; reflect has none).
+        const int least = fn == "reflect" ? kCalls : kCalls * 95 / 100;
+        EXPECT_GE(answered, least) << fn << " " << precisionRulesName(rules) << " size " << size;
       }
-      // Declining is always right; declining most calls would make the
-      // road pointless (it declines an undecidable branch: about 1% here).
-      EXPECT_GT(answered, kCalls * 95 / 100) << precisionRulesName(rules) << " size " << size;
-    }
 }
 
 // Zeros, powers of two, normal and grazing incidence, eta 1, tiny and
 // large components, the critical angle, and inputs it must decline.
-TEST(RefractOnPoints, GivesTheGeneralRoadsBitsOnEdgeCalls) {
+TEST(PointBuiltins, GiveTheGeneralRoadsBitsOnEdgeCalls) {
   const float tiny = 0x1p-60f;
   const float large = 0x1p15f;
   const float denormal = 0x1p-130f;
@@ -192,16 +200,28 @@ TEST(RefractOnPoints, GivesTheGeneralRoadsBitsOnEdgeCalls) {
       {"refract", {-1.0f}, {1.0f}, 0.66f},
   };
   for (PrecisionRules rules : kRules)
-    for (const BuiltinCall& call : calls)
+    for (BuiltinCall call : calls) {
       expectSameAnswer(evaluateBuiltin(call, rules),
                        evaluateBuiltin(call, rules, OracleRoad::General), describe(call, rules));
+      call.fn = "reflect";
+      expectSameAnswer(evaluateBuiltin(call, rules),
+                       evaluateBuiltin(call, rules, OracleRoad::General), describe(call, rules));
+    }
 }
 
-TEST(RefractOnPoints, DeclinesWhatItDoesNotMirror) {
+TEST(PointBuiltins, DeclineWhatTheyDoNotMirror) {
   const std::vector<float> I{0.6f, -0.8f, 0.0f};
   const std::vector<float> N{0.0f, 1.0f, 0.0f};
   for (PrecisionRules rules : kRules) {
     const UsePrecisionRules applied(rules);
+    PointBounds bounds;
+    ASSERT_TRUE(reflectOnPoints(I, N, rules, bounds)) << precisionRulesName(rules);
+    EXPECT_FALSE(
+        reflectOnPoints(std::vector<float>{-1.0f}, std::vector<float>{1.0f}, rules, bounds));
+    EXPECT_FALSE(reflectOnPoints(std::vector<float>{0x1p17f, -0.8f, 0.0f}, N, rules, bounds));
+    EXPECT_FALSE(reflectOnPoints(
+        I, std::vector<float>{0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f}, rules, bounds));
+    EXPECT_FALSE(reflectOnPoints(I, std::vector<float>{0.0f, 1.0f}, rules, bounds));
     PointRefract out;
     ASSERT_TRUE(refractOnPoints(I, N, 0.66f, false, rules, out)) << precisionRulesName(rules);
     // The exact evaluation's branch against the intervals' decided one.
@@ -223,7 +243,7 @@ TEST(RefractOnPoints, DeclinesWhatItDoesNotMirror) {
 }
 
 // The comparison above sees a bound one float away.
-TEST(RefractOnPoints, TheComparisonSeesOneFloatOfDifference) {
+TEST(PointBuiltins, TheComparisonSeesOneFloatOfDifference) {
   const BuiltinCall call{"refract", {0.6f, -0.8f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.66f};
   const BuiltinResult general = evaluateBuiltin(call, PrecisionRules::Glsl, OracleRoad::General);
   BuiltinResult moved = general;

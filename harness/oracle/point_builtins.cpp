@@ -1,4 +1,4 @@
-#include "oracle/refract_on_points.h"
+#include "oracle/point_builtins.h"
 
 #include <algorithm>
 #include <array>
@@ -299,6 +299,25 @@ Parts sumAsFactor(const Closed& v, const IntervalRegion& region, int otherTerms)
   }
 }
 
+// A component of the built-in's result, the sum `c` closed: its set,
+// under Vulkan made symmetric about the ideal value (inherited()). Under
+// the GLSL rules the error is not read, so it is not made.
+template <PrecisionRules rules>
+bool inheritedComponent(const Combined& c, PointBounds& out, std::size_t i) {
+  Closed r{};
+  if constexpr (rules == PrecisionRules::Glsl) {
+    const Range set = float_sets::roundedAround(c.ideal, c.pending);
+    if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return false;
+    r.set = float_sets::admitFlushToZero(set);
+  } else {
+    if (!closedResult(c, r)) return false;
+    makeSymmetric(r);
+  }
+  out.lo[i] = r.set.lo;
+  out.hi[i] = r.set.hi;
+  return true;
+}
+
 // glsl::refract(), n = 2 to 4. Flattened: GCC at -O2 kept pendingError,
 // roundedAround and exactProductRange as calls, a third of the time.
 template <PrecisionRules rules>
@@ -360,21 +379,31 @@ template <PrecisionRules rules>
     if (!combine<false>(sumAsFactor<rules>(t, tRegion, nParts.region.terms), nParts, rules, c))
       return false;
     const Open tN{c.ideal, c.region};
-    Closed r{};
-    if (!combine<true>(openParts(pointProduct(e, I[i])), openParts(negated(tN)), rules, c))
+    if (!combine<true>(openParts(pointProduct(e, I[i])), openParts(negated(tN)), rules, c) ||
+        !inheritedComponent<rules>(c, out, i))
       return false;
-    if constexpr (rules == PrecisionRules::Glsl) {
-      // The set alone: the error is not read.
-      const Range set = float_sets::roundedAround(c.ideal, c.pending);
-      if (std::isnan(set.lo) || std::isnan(set.hi) || set.lo > set.hi) return false;
-      r.set = float_sets::admitFlushToZero(set);
-    } else {
-      // inherited(): symmetric about the ideal value.
-      if (!closedResult(c, r)) return false;
-      makeSymmetric(r);
-    }
-    out.lo[i] = r.set.lo;
-    out.hi[i] = r.set.hi;
+  }
+  return true;
+}
+
+// glsl::reflect(), n = 2 to 4: I - 2.0 * dot(N, I) * N.
+template <PrecisionRules rules>
+[[gnu::flatten]] bool reflectWith(std::span<const float> I, std::span<const float> N,
+                                  PointBounds& out) {
+  Dot dot{};
+  if (!dotOfPoints(N, I, rules, dot)) return false;
+  // The literal 2.0 is a constant power of two: it multiplies exactly.
+  const Parts two{{2.0, 2.0}, 0.0, leafRegion(2.0, 0.0, true)};
+  Combined c{};
+  if (!combine<false>(two, sumAsFactor<rules>(dot.value, dot.region, two.region.terms), rules, c))
+    return false;
+  const Open twiceD{c.ideal, c.region};
+  for (std::size_t i = 0; i < I.size(); ++i) {
+    if (!combine<false>(openParts(twiceD), pointParts(N[i]), rules, c)) return false;
+    const Open along{c.ideal, c.region};
+    if (!combine<true>(pointParts(I[i]), openParts(negated(along)), rules, c) ||
+        !inheritedComponent<rules>(c, out, i))
+      return false;
   }
   return true;
 }
@@ -387,13 +416,25 @@ bool mirrorable(float x) {
   return a == 0.0 || (a >= kFp32MinNormal && a <= kLargestInput);
 }
 
+bool mirrorable(std::span<const float> I, std::span<const float> N) {
+  if (I.size() != N.size() || I.size() < 2 || I.size() > 4) return false;
+  for (std::size_t i = 0; i < I.size(); ++i)
+    if (!mirrorable(I[i]) || !mirrorable(N[i])) return false;
+  return true;
+}
+
 }  // namespace
+
+bool reflectOnPoints(std::span<const float> I, std::span<const float> N, PrecisionRules rules,
+                     PointBounds& out) {
+  if (!mirrorable(I, N)) return false;
+  if (rules == PrecisionRules::Vulkan) return reflectWith<PrecisionRules::Vulkan>(I, N, out);
+  return reflectWith<PrecisionRules::Glsl>(I, N, out);
+}
 
 bool refractOnPoints(std::span<const float> I, std::span<const float> N, float eta,
                      bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out) {
-  if (I.size() != N.size() || I.size() < 2 || I.size() > 4 || !mirrorable(eta)) return false;
-  for (std::size_t i = 0; i < I.size(); ++i)
-    if (!mirrorable(I[i]) || !mirrorable(N[i])) return false;
+  if (!mirrorable(I, N) || !mirrorable(eta)) return false;
   if (rules == PrecisionRules::Vulkan)
     return refractWith<PrecisionRules::Vulkan>(I, N, eta, exactTotalInternalReflection, out);
   return refractWith<PrecisionRules::Glsl>(I, N, eta, exactTotalInternalReflection, out);
