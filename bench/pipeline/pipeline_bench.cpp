@@ -6,7 +6,8 @@
 // chunks as eval (runner/builtin_draw.h, evaluateBuiltin); what eval adds
 // is reading JSON and writing its answers. `oracle_glsl` and
 // `oracle_vulkan` rows run the oracle alone, on every core, under the rules
-// gl and vk are judged by.
+// gl and vk are judged by; `general_road` rows run it without the shorter
+// road for exact inputs (oracle/point_builtins.h), the same bounds.
 //
 // build/bench/snell_pipeline_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 #include <benchmark/benchmark.h>
@@ -76,7 +77,8 @@ Driver& driverNamed(const std::string& name) {
 
 // `backendName` is a driver, judged by its API's rules, or
 // `oracle:glsl` / `oracle:vulkan`, the oracle alone under those rules.
-void pipeline(benchmark::State& state, const std::string& backendName, const std::string& fn) {
+void pipeline(benchmark::State& state, const std::string& backendName, const std::string& fn,
+              OracleRoad road = OracleRoad::Shortest) {
   Backend* backend = nullptr;
   PrecisionRules rules = PrecisionRules::Glsl;
   if (backendName == "oracle:glsl" || backendName == "oracle:vulkan") {
@@ -104,7 +106,7 @@ void pipeline(benchmark::State& state, const std::string& backendName, const std
         count, kBlockLines,
         [&](std::size_t begin, std::size_t end) {
           for (std::size_t k = begin; k < end; ++k)
-            oracle[k] = evaluateBuiltin(calls[first + k], rules);
+            oracle[k] = evaluateBuiltin(calls[first + k], rules, road);
         },
         [&] {
           if (backend) drawBuiltinCalls(std::span(drawn.data(), count), *backend);
@@ -146,8 +148,16 @@ void pipeline(benchmark::State& state, const std::string& backendName, const std
       ->UseRealTime()                                                      \
       ->Unit(benchmark::kMillisecond)
 SNELL_PIPELINE(oracle_glsl_refract, "oracle:glsl", "refract");
+BENCHMARK_CAPTURE(pipeline, oracle_glsl_refract_general_road, std::string("oracle:glsl"),
+                  std::string("refract"), OracleRoad::General)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 SNELL_PIPELINE(gl_refract, "gl", "refract");
 SNELL_PIPELINE(oracle_vulkan_refract, "oracle:vulkan", "refract");
+BENCHMARK_CAPTURE(pipeline, oracle_vulkan_refract_general_road, std::string("oracle:vulkan"),
+                  std::string("refract"), OracleRoad::General)
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
 SNELL_PIPELINE(vk_refract, "vk", "refract");
 SNELL_PIPELINE(oracle_glsl_reflect, "oracle:glsl", "reflect");
 SNELL_PIPELINE(gl_reflect, "gl", "reflect");
