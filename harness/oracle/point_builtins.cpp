@@ -169,17 +169,6 @@ bool dotOfPoints(std::span<const float> N, std::span<const float> I, PrecisionRu
   return true;
 }
 
-// inversesqrt() of Interval(lo, hi), 0 < lo.
-bool inversesqrtOfRange(double lo, double hi, Closed& r) {
-  const double highest = above(1.0 / std::sqrt(lo));
-  const double lowest = below(1.0 / std::sqrt(hi));
-  const Range set = float_sets::withinUlps(lowest, highest, 2.0);
-  const double m = lo;
-  const double propagated = 0.0 / (2.0 * m * std::sqrt(m));
-  const double own = 2.0 * fp32_bits::gapAbove(highest);
-  return leafValue(set, {lowest, highest}, up(up(propagated) + own), r);
-}
-
 // symmetricAboutIdeal() of a value with a finite error: Vulkan's
 // [x - E, x + E] for a built-in whose precision is inherited.
 void makeSymmetric(Closed& v) {
@@ -188,66 +177,24 @@ void makeSymmetric(Closed& v) {
   v.set.hi = std::max(v.set.hi, symmetric.hi);
 }
 
-// 1.0 / b, as sqrt's formula divides (operator/ and divided()): the float
-// set only, which is all sqrt() reads of it. Under Vulkan the quotient may
-// also be the reciprocal times the dividend, an alternative.
-template <PrecisionRules rules>
-bool reciprocalSet(const Closed& bIn, Range& out) {
-  const Parts b = closedParts(bIn, rules);
-  const Range bSet = bIn.set;
-  if (bSet.lo <= 0.0 && bSet.hi >= 0.0) return false;
-  const double smallest = std::min(std::fabs(bSet.lo), std::fabs(bSet.hi));
-  const double largest = maxAbs(bSet);
-  if (smallest < 0x1p-126 || largest > 0x1p126) return false;
-  if (b.ideal.lo <= 0.0 && b.ideal.hi >= 0.0) return false;
-  const Range quotients = float_sets::quotientRange(1.0, 1.0, bSet.lo, bSet.hi);
-  Range set = float_sets::withinUlps(quotients.lo, quotients.hi, 2.5);
-  const bool setsAreIdeal = fp32_bits::bitsOf(bSet.lo) == fp32_bits::bitsOf(b.ideal.lo) &&
-                            fp32_bits::bitsOf(bSet.hi) == fp32_bits::bitsOf(b.ideal.hi);
-  const Range ideal =
-      setsAreIdeal ? quotients : float_sets::quotientRange(1.0, 1.0, b.ideal.lo, b.ideal.hi);
-  const double idealSmallest = std::min(std::fabs(b.ideal.lo), std::fabs(b.ideal.hi));
-  const double propagated = (0.0 * maxAbs(b.ideal) + 1.0 * b.err) / (smallest * idealSmallest);
-  double own = 2.5 * fp32_bits::gapAbove(maxAbs(quotients)) +
-               float_sets::flushError(quotients.lo, quotients.hi);
-  if constexpr (rules == PrecisionRules::Vulkan) {
-    // The dividend is 1: the reciprocal is the quotient itself.
-    const Range reciprocal = set;
-    const Range products = float_sets::roundedProduct(1.0, 1.0, reciprocal.lo, reciprocal.hi);
-    if (std::isnan(products.lo) || std::isnan(products.hi)) return false;
-    set.lo = std::min(set.lo, products.lo);
-    set.hi = std::max(set.hi, products.hi);
-    const double viaReciprocal = 1.0 * (2.5 * fp32_bits::gapAbove(maxAbs(quotients)) +
-                                        float_sets::flushError(reciprocal.lo, reciprocal.hi)) +
-                                 float_sets::roundingError(products.lo, products.hi);
-    own = std::max(own, up(viaReciprocal));
-  }
-  Closed direct{};
-  if (!leafValue(set, ideal, up(propagated + own), direct)) return false;
-  out = direct.set;
-  if constexpr (rules == PrecisionRules::Vulkan) {
-    // withAlternative(direct, 1.0 * direct): the product of the input 1.0
-    // (not a literal) and the closed quotient, one order only.
-    const Parts one{{1.0, 1.0}, 0.0, leafRegion(1.0, 0.0, false)};
-    const Parts q = closedParts(direct, rules);
-    Combined c{};
-    if (!combine<false>(one, q, rules, c)) return false;
-    Range product = float_sets::roundedAround(c.ideal, c.pending);
-    const bool productSetsAreIdeal =
-        fp32_bits::bitsOf(direct.set.lo) == fp32_bits::bitsOf(q.ideal.lo) &&
-        fp32_bits::bitsOf(direct.set.hi) == fp32_bits::bitsOf(q.ideal.hi) &&
-        !std::isnan(c.ideal.lo) && !std::isnan(c.ideal.hi);
-    const Range plain =
-        productSetsAreIdeal
-            ? Range{fp32_bits::floatAtOrBelow(c.ideal.lo), fp32_bits::floatAtOrAbove(c.ideal.hi)}
-            : float_sets::roundedProduct(1.0, 1.0, direct.set.lo, direct.set.hi);
-    product.lo = std::max(product.lo, plain.lo);
-    product.hi = std::min(product.hi, plain.hi);
-    if (std::isnan(product.lo) || std::isnan(product.hi) || product.lo > product.hi) return false;
-    product = float_sets::admitFlushToZero(product);
-    out.lo = std::min(out.lo, product.lo);
-    out.hi = std::max(out.hi, product.hi);
-  }
+// The float set of sqrt()'s formula, 1.0 / inversesqrt(x), for x any
+// float in [lo, hi], 0 < lo (refract's k): all that sqrt() reads of it. The general road also makes
+// each step's ideal range and error, which only that step's own error reads, and under Vulkan two
+// more roads to the quotient: through the reciprocal (of a dividend of 1, the quotient itself,
+// times 1) and the alternative 1.0 * quotient, whose plain interval is the quotient's own set.
+// Neither adds a float, and for these arguments none of those steps can make the value
+// unconstrained (every error is finite, no range reaches 0): they are left out.
+bool rootSetOfRange(double lo, double hi, Range& out) {
+  // inversesqrt(): 2 ULP about the exact values at the ends.
+  const Range inverse = float_sets::admitFlushToZero(
+      float_sets::withinUlps(below(1.0 / std::sqrt(hi)), above(1.0 / std::sqrt(lo)), 2.0));
+  // divided(1.0, inverse): 2.5 ULP about the exact quotients.
+  if (inverse.lo <= 0.0 && inverse.hi >= 0.0) return false;
+  const double smallest = std::min(std::fabs(inverse.lo), std::fabs(inverse.hi));
+  if (smallest < 0x1p-126 || maxAbs(inverse) > 0x1p126) return false;
+  const Range quotients = float_sets::quotientRange(1.0, 1.0, inverse.lo, inverse.hi);
+  if (std::isnan(quotients.lo) || std::isnan(quotients.hi)) return false;
+  out = float_sets::admitFlushToZero(float_sets::withinUlps(quotients.lo, quotients.hi, 2.5));
   return true;
 }
 
@@ -261,11 +208,8 @@ bool sqrtOf(const Closed& xIn, Closed& r) {
     r = {{0.0, 0.0}, {0.0, 0.0}, 0.0};  // Interval::point(0.0f)
     return true;
   }
-  Closed inverse{};
   Range root{};
-  if (!inversesqrtOfRange(std::max(xSet.lo, kFp32MinDenormal), xSet.hi, inverse) ||
-      !reciprocalSet<rules>(inverse, root))
-    return false;
+  if (!rootSetOfRange(std::max(xSet.lo, kFp32MinDenormal), xSet.hi, root)) return false;
   const double lo = xSet.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
   const double m = std::max(0.0, std::min(xSet.lo, x.ideal.lo));
   const double propagated =
