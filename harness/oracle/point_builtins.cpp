@@ -178,12 +178,14 @@ void makeSymmetric(Closed& v) {
 }
 
 // The float set of sqrt()'s formula, 1.0 / inversesqrt(x), for x any
-// float in [lo, hi], 0 < lo (refract's k): all that sqrt() reads of it. The general road also makes
-// each step's ideal range and error, which only that step's own error reads, and under Vulkan two
-// more roads to the quotient: through the reciprocal (of a dividend of 1, the quotient itself,
-// times 1) and the alternative 1.0 * quotient, whose plain interval is the quotient's own set.
-// Neither adds a float, and for these arguments none of those steps can make the value
-// unconstrained (every error is finite, no range reaches 0): they are left out.
+// float in [lo, hi], 0 < lo (refract's k): all that sqrt() reads of it.
+// The general road also makes each step's ideal range and error, which
+// only that step's own error reads, and under Vulkan two more roads to
+// the quotient: through the reciprocal (of a dividend of 1: the quotient
+// itself, times 1) and the alternative 1.0 * quotient, whose plain
+// interval is the quotient's own set. Neither adds a float, and for these
+// arguments none of those steps can make the value unconstrained (every
+// error is finite, no range reaches 0): they are left out.
 bool rootSetOfRange(double lo, double hi, Range& out) {
   // inversesqrt(): 2 ULP about the exact values at the ends.
   const Range inverse = float_sets::admitFlushToZero(

@@ -10,13 +10,17 @@
 // intermediate results feed their consumer only their ideal range and
 // region: this road computes just those, with the same primitives
 // (interval_region_bounds.h, interval_float_sets.h) in the same order, so
-// the bounds are the same bits. Where an input is outside what it mirrors
+// the bounds are the same bits. (sqrt's formula is its float set alone:
+// point_builtins.cpp says why its other steps cannot change it.) Where an
+// input is outside what it mirrors
 // (NaN, an infinity, a denormal, a magnitude past 2^16, one component, a
 // branch the intervals cannot decide, or one they decide against the exact
 // value's) it declines and the caller takes the general road.
 //
 // Checked against the general road on random and edge inputs under both
-// rules (tests/oracle/point_builtins_test.cpp).
+// rules (tests/oracle/point_builtins_test.cpp), and against the adversarial
+// machine (tests/oracle/adversary). A change to the general road's bounds
+// must be made here too, or those tests fail.
 #include <array>
 #include <span>
 
