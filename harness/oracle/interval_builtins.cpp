@@ -9,6 +9,7 @@
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
 #include "oracle/interval_region_bounds.h"
+#include "oracle/interval_sqrt_error.h"
 #include "oracle/interval_tree_sum.h"
 #include "oracle/precision_rules.h"
 
@@ -97,25 +98,9 @@ Interval sqrt(const Interval& xIn) {
   const Interval root = kOne / inversesqrt(positive);
   if (root.undefined) return root;
   const double lo = x.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
-  // Its error: the argument's error through sqrt (sqrt(|a' - a|) at worst,
-  // |a' - a| / (2 sqrt(m)) away from 0), plus the formula's own relative
-  // error: inversesqrt's 2 ULP then the division's 2.5, each at most
-  // 2^-23 of the value.
-  const double m = std::max(0.0, smallestArgument(x));
-  const double propagated =
-      m > 0.0 ? std::min(std::sqrt(x.err), x.err / (2.0 * std::sqrt(m))) : std::sqrt(x.err);
-  // r = inversesqrt within 2 ULP, then 1 / r within 2.5 ULP. The first is
-  // a relative error |delta| <= 2 gap(r) / r <= 2^-22 (r >= 2^-64 is
-  // normal), which moves 1/r by |delta| / (1 - |delta|) of its value: a
-  // bound relative to the result, whatever the smallest argument (at x =
-  // 0 the result is exactly 0).
-  const double sMax = above(std::sqrt(x.hi));
-  const double delta = 0x1p-22;
-  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * fp32_bits::gapAbove(root.hi) +
-                        float_sets::flushError(lo, root.hi));
-  const Interval r =
-      leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
-                above(std::sqrt(std::max(0.0, x.idealHi))), up(up(propagated) + own));
+  const Interval r = leafValue(lo, root.hi, below(std::sqrt(std::max(0.0, x.idealLo))),
+                               above(std::sqrt(std::max(0.0, x.idealHi))),
+                               sqrtErrorBound(smallestArgument(x), x.err, x.hi, lo, root.hi));
   // Inherited from 1.0 / inversesqrt(x).
   return inheritedUnderVulkan(folded(r, x, sqrtOf));
 }

@@ -10,6 +10,7 @@
 #include "oracle/fp32_bits.h"
 #include "oracle/interval_float_sets.h"
 #include "oracle/interval_region_bounds.h"
+#include "oracle/interval_sqrt_error.h"
 #include "oracle/interval_tree_sum.h"
 
 namespace snell {
@@ -213,17 +214,10 @@ bool sqrtOf(const Closed& xIn, Closed& r) {
   Range root{};
   if (!rootSetOfRange(std::max(xSet.lo, kFp32MinDenormal), xSet.hi, root)) return false;
   const double lo = xSet.lo <= 0.0 ? std::min(0.0, root.lo) : root.lo;
-  const double m = std::max(0.0, std::min(xSet.lo, x.ideal.lo));
-  const double propagated =
-      m > 0.0 ? std::min(std::sqrt(x.err), x.err / (2.0 * std::sqrt(m))) : std::sqrt(x.err);
-  const double sMax = above(std::sqrt(xSet.hi));
-  const double delta = 0x1p-22;
-  const double own = up(sMax * delta / (1.0 - delta) + 2.5 * fp32_bits::gapAbove(root.hi) +
-                        float_sets::flushError(lo, root.hi));
   if (!leafValue({lo, root.hi},
                  {below(std::sqrt(std::max(0.0, x.ideal.lo))),
                   above(std::sqrt(std::max(0.0, x.ideal.hi)))},
-                 up(up(propagated) + own), r))
+                 sqrtErrorBound(std::min(xSet.lo, x.ideal.lo), x.err, xSet.hi, lo, root.hi), r))
     return false;
   if constexpr (rules == PrecisionRules::Vulkan) makeSymmetric(r);
   return true;
