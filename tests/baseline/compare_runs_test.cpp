@@ -195,15 +195,17 @@ TEST(CompareRuns, GoldenAndOtherBackendImageErrorsDrift) {
   EXPECT_EQ(c.drift[1].from, 1e-5);
 }
 
+// A gl pass whose record carries `digest` as its listing's.
+CaseResult ran(const std::string& id, const std::string& digest) {
+  CaseResult r = result(id, "gl", Status::Pass);
+  r.listingDigest = digest;
+  return r;
+}
+
 // A result whose listing's text changed between the runs is named, so
 // that a change of status can be laid at the shader's edit, not the
 // driver's; records from before the digest say nothing either way.
 TEST(CompareRuns, AListingEditedBetweenRunsIsNamed) {
-  const auto ran = [](const std::string& id, const std::string& digest) {
-    CaseResult r = result(id, "gl", Status::Pass);
-    r.listingDigest = digest;
-    return r;
-  };
   const RunComparison c = compareRuns(
       side("a.jsonl", {ran("edited", "1"), ran("same", "2"), ran("old", "")}),
       side("b.jsonl", {ran("edited", "3"), ran("same", "2"), ran("old", "4")}), DriftRule{});
@@ -221,11 +223,6 @@ TEST(CompareRuns, AListingEditedBetweenRunsIsNamed) {
 // A case that ended while its listing was being edited ran an unknown
 // text: named as edited even where both records say so.
 TEST(CompareRuns, ARecordOfAnEditDuringTheRunIsNamedAsEdited) {
-  const auto ran = [](const std::string& id, const std::string& digest) {
-    CaseResult r = result(id, "gl", Status::Pass);
-    r.listingDigest = digest;
-    return r;
-  };
   const RunComparison c = compareRuns(
       side("a.jsonl", {ran("both", kListingEditedDuringRun), ran("now", "1"), ran("same", "2")}),
       side("b.jsonl", {ran("both", kListingEditedDuringRun), ran("now", kListingEditedDuringRun),

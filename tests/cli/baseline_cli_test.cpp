@@ -12,6 +12,7 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -365,14 +366,29 @@ std::size_t lineCount(const fs::path& path) {
   return n;
 }
 
-// Waits until the run `pid` has streamed a record to `partial`, or has
-// exited (then true, with its status).
-bool waitForARecord(pid_t pid, const fs::path& partial, int& status) {
-  for (int k = 0; k < 30000 && lineCount(partial) < 1; ++k) {
-    if (waitpid(pid, &status, WNOHANG) == pid) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+// `snell args`, whose --json is `json` and whose stderr goes to `err`,
+// with `edit` made as soon as its first record is streamed (or the run has
+// ended, if it ends first): the records streamed before the edit, and the
+// run's exit status.
+struct EditedRun {
+  std::size_t recordsBeforeEdit = 0;
+  int status = 0;
+};
+EditedRun runEditingAfterTheFirstRecord(const std::vector<std::string>& args, const fs::path& json,
+                                        const fs::path& err, const std::function<void()>& edit) {
+  const pid_t pid = spawnSnell(args, err.string());
+  fs::path partial = json;
+  partial += ".partial";
+  EditedRun run;
+  bool exited = false;
+  for (int k = 0; k < 30000 && !exited && lineCount(partial) < 1; ++k) {
+    exited = waitpid(pid, &run.status, WNOHANG) == pid;
+    if (!exited) std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  return false;
+  run.recordsBeforeEdit = lineCount(partial);
+  edit();
+  if (!exited) waitpid(pid, &run.status, 0);
+  return run;
 }
 
 // A listing edited while a run is in progress: a case that ends after the
@@ -385,21 +401,15 @@ TEST(BaselineCli, AListingEditedDuringTheRunIsRecordedAsSuch) {
   const fs::path err = scratch / "err.txt";
   // One worker, four cases one after another, each computing its oracle
   // (no cache): the listing is edited as soon as the first has ended.
-  const pid_t pid =
-      spawnSnell({"run", "--backend", "gl", "-j", "1", "--oracle-cache", "off", "--shaders",
-                  shaders.string(), "--out", (scratch / "out").string(), "--json", json.string()},
-                 err.string());
-  fs::path partial = json;
-  partial += ".partial";
-  // Until the first case has ended (or the run, if it failed to start).
-  int status = 0;
-  const bool exited = waitForARecord(pid, partial, status);
-  const std::size_t before = lineCount(partial);
+  const EditedRun run = runEditingAfterTheFirstRecord(
+      {"run", "--backend", "gl", "-j", "1", "--oracle-cache", "off", "--shaders", shaders.string(),
+       "--out", (scratch / "out").string(), "--json", json.string()},
+      json, err,
+      [&] { std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n"; });
+  const std::size_t before = run.recordsBeforeEdit;
   ASSERT_GE(before, 1u) << readText(err);
-  std::ofstream(shaders / "fresnel" / "fresnel.vert", std::ios::app) << "// edited\n";
-  if (!exited) waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0) << readText(err);
+  ASSERT_TRUE(WIFEXITED(run.status));
+  EXPECT_EQ(WEXITSTATUS(run.status), 0) << readText(err);
   // One worker: the records are in the order the cases ended. Those that
   // ended before the edit carry the digest of the text (at least the
   // first); those after it say they cannot, and at least the last one
@@ -449,18 +459,12 @@ TEST(BaselineCli, ARerunAfterAnEditDuringTheRunIsNoFlake) {
   std::ofstream(vert) << broken;
   const fs::path json = scratch / "r.jsonl";
   const fs::path err = scratch / "err.txt";
-  const pid_t pid = spawnSnell(
+  const EditedRun run = runEditingAfterTheFirstRecord(
       {"run", "--backend", "gl", "-j", "1", "--reruns", "1", "--filter", "*/sphere", "--shaders",
        shaders.string(), "--out", (scratch / "out").string(), "--json", json.string()},
-      err.string());
-  fs::path partial = json;
-  partial += ".partial";
-  int status = 0;
-  const bool exited = waitForARecord(pid, partial, status);
-  std::ofstream(vert) << published;
-  if (!exited) waitpid(pid, &status, 0);
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1) << readText(err);
+      json, err, [&] { std::ofstream(vert) << published; });
+  ASSERT_TRUE(WIFEXITED(run.status));
+  EXPECT_EQ(WEXITSTATUS(run.status), 1) << readText(err);
   const auto finished = records(json);
   ASSERT_EQ(finished.size(), 1u);
   EXPECT_EQ(finished[0]["status"], "Fail") << readText(err);

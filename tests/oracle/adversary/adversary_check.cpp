@@ -251,6 +251,11 @@ std::vector<std::vector<float>> machineOutputs(const derived::Program& program,
   return values;
 }
 
+// The machine's seed for one run on one vertex: apart for every pair.
+std::uint64_t vertexRunSeed(std::uint64_t seed, std::size_t vertex, int run) {
+  return seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+}
+
 std::string vertexInputs(const AttributeMap& attributes, std::size_t vertex) {
   std::string s;
   for (const auto& [name, stream] : attributes) {
@@ -396,8 +401,7 @@ void checkListing(const ListingInputs& in, PrecisionRules rules, int runs, std::
   const UsePrecisionRules use(rules);
   for (std::size_t vertex = 0; vertex < in.vertexCount; ++vertex) {
     for (int run = 0; run < runs; ++run) {
-      const std::uint64_t runSeed =
-          seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+      const std::uint64_t runSeed = vertexRunSeed(seed, vertex, run);
       Machine::begin(runSeed, rules);
       const std::vector<float> values =
           allOf(listing.run(uniforms, in.constants, in.attributes, vertex));
@@ -451,8 +455,7 @@ void checkDerivedListing(const DerivedListingInputs& in, const derived::ShaderSo
   for (std::size_t vertex = 0; vertex < b.vertexCount; ++vertex) {
     const AttributeMap one = vertexAlone(b.attributes, vertex);
     for (int run = 0; run < runs; ++run) {
-      const std::uint64_t runSeed =
-          seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+      const std::uint64_t runSeed = vertexRunSeed(seed, vertex, run);
       const std::vector<std::vector<float>> outputs =
           machineOutputs(program, uniforms, one, rules, runSeed);
       ++tally.evaluations;
@@ -493,8 +496,7 @@ void checkHandWrittenAgainstDerived(const DerivedListingInputs& in, PrecisionRul
   const UsePrecisionRules use(rules);
   for (std::size_t vertex = 0; vertex < b.vertexCount; ++vertex) {
     for (int run = 0; run < runs; ++run) {
-      const std::uint64_t runSeed =
-          seed + (vertex * 131 + static_cast<std::uint64_t>(run)) * 0x9e3779b97f4a7c15ULL;
+      const std::uint64_t runSeed = vertexRunSeed(seed, vertex, run);
       Machine::begin(runSeed, rules);
       const NamedOutputs outputs = listing.run(uniforms, b.constants, b.attributes, vertex);
       ++tally.evaluations;
