@@ -68,6 +68,65 @@ std::vector<float> valuesAt(const Image& probe, const std::vector<Pixel>& pixels
   return data;
 }
 
+// The probes' images turned into what the oracle and the comparison read:
+// the pixels where every input of every oracle was written (alpha 1 marks a
+// write), the oracles' inputs there, and the captured outputs.
+struct ProbeValues {
+  std::vector<Pixel> pixels;
+  AttributeMap inputs;
+  std::vector<CapturedVarying> observed;
+  std::string unwritten;  // output probes missing where the inputs were written
+};
+
+ProbeValues probeValues(const Manifest& m, const Scene& scene,
+                        const std::vector<NamedOracle>& oracles, const RenderOutcome& outcome) {
+  // Charged as a vertex capture's split of its buffer into varyings is.
+  const PhaseScope reading(Phase::ReadBack);
+  std::vector<std::string> inputNames;
+  for (const NamedOracle& oracle : oracles)
+    for (const std::string& name : oracle.oracle->inputs())
+      if (!contains(inputNames, name)) inputNames.push_back(name);
+  const auto isOracleInput = [&](const FragmentCapture& capture) {
+    return contains(inputNames, capture.name);
+  };
+  std::vector<const Image*> inputProbes;
+  for (std::size_t k = 0; k < m.captureFragment.size(); ++k)
+    if (isOracleInput(m.captureFragment[k])) inputProbes.push_back(&outcome.probes[k]);
+
+  ProbeValues found;
+  for (int y = 0; y < scene.height; ++y)
+    for (int x = 0; x < scene.width; ++x)
+      if (std::all_of(inputProbes.begin(), inputProbes.end(),
+                      [&](const Image* probe) { return probe->at(x, y)[3] == 1.0f; }))
+        found.pixels.push_back({x, y});
+
+  const auto isInput = [&](const FragmentCapture& capture) {
+    return isOracleInput(capture) ||
+           std::none_of(oracles.begin(), oracles.end(), [&](const NamedOracle& oracle) {
+             return contains(oracle.oracle->outputs(), capture.name);
+           });
+  };
+  for (std::size_t k = 0; k < m.captureFragment.size(); ++k) {
+    const FragmentCapture& capture = m.captureFragment[k];
+    const int components = componentCount(capture.type);
+    std::vector<float> values = valuesAt(outcome.probes[k], found.pixels, components);
+    if (isInput(capture)) {
+      found.inputs[capture.name] = AttributeStream{capture.name, components, std::move(values)};
+      continue;
+    }
+    const std::size_t missing = static_cast<std::size_t>(
+        std::count_if(found.pixels.begin(), found.pixels.end(),
+                      [&](const Pixel& p) { return outcome.probes[k].at(p.x, p.y)[3] != 1.0f; }));
+    if (missing)
+      found.unwritten += fmt::format(
+          "{}: not written at {} of the {} pixels where the oracle's "
+          "inputs were (line {} did not run there)\n",
+          capture.name, missing, found.pixels.size(), capture.line);
+    found.observed.push_back(CapturedVarying{capture.name, components, std::move(values)});
+  }
+  return found;
+}
+
 std::string describe(const VaryingCheck& v, const std::vector<Pixel>& pixels,
                      const AttributeMap& inputs, const UniformMap& uniforms,
                      const FragmentCapture& capture, const std::string& fragmentPath) {
@@ -130,51 +189,11 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
     return check;
   }
 
-  // Checked: the pixels where every input of every oracle was read (alpha 1
-  // marks a write).
-  std::vector<std::string> inputNames;
-  for (const NamedOracle& oracle : oracles)
-    for (const std::string& name : oracle.oracle->inputs())
-      if (!contains(inputNames, name)) inputNames.push_back(name);
-  std::vector<Pixel> pixels;
-  for (int y = 0; y < scene.height; ++y)
-    for (int x = 0; x < scene.width; ++x) {
-      bool allRead = true;
-      for (std::size_t k = 0; k < m.captureFragment.size(); ++k)
-        if (contains(inputNames, m.captureFragment[k].name) &&
-            outcome.probes[k].at(x, y)[3] != 1.0f)
-          allRead = false;
-      if (allRead) pixels.push_back({x, y});
-    }
+  const ProbeValues probed = probeValues(m, scene, oracles, outcome);
+  const std::vector<Pixel>& pixels = probed.pixels;
+  const AttributeMap& inputs = probed.inputs;
   check.pixels = pixels.size();
-
-  AttributeMap inputs;
-  std::vector<CapturedVarying> observed;
-  const auto isInput = [&](const FragmentCapture& capture) {
-    return contains(inputNames, capture.name) ||
-           std::none_of(oracles.begin(), oracles.end(), [&](const NamedOracle& oracle) {
-             return contains(oracle.oracle->outputs(), capture.name);
-           });
-  };
-  for (std::size_t k = 0; k < m.captureFragment.size(); ++k) {
-    const FragmentCapture& capture = m.captureFragment[k];
-    const int components = componentCount(capture.type);
-    std::vector<float> values = valuesAt(outcome.probes[k], pixels, components);
-    if (isInput(capture)) {
-      inputs[capture.name] = AttributeStream{capture.name, components, std::move(values)};
-      continue;
-    }
-    const std::size_t missing =
-        static_cast<std::size_t>(std::count_if(pixels.begin(), pixels.end(), [&](const Pixel& p) {
-          return outcome.probes[k].at(p.x, p.y)[3] != 1.0f;
-        }));
-    if (missing)
-      check.unwritten += fmt::format(
-          "{}: not written at {} of the {} pixels where the oracle's "
-          "inputs were (line {} did not run there)\n",
-          capture.name, missing, pixels.size(), capture.line);
-    observed.push_back(CapturedVarying{capture.name, components, std::move(values)});
-  }
+  check.unwritten = probed.unwritten;
 
   for (const NamedOracle& oracle : oracles) {
     const auto start = std::chrono::steady_clock::now();
@@ -187,7 +206,7 @@ FragmentVectorCheck checkFragmentVectors(Backend& backend, const Manifest& m, co
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const PhaseScope comparing(Phase::Compare);
     std::string failures;
-    for (const CapturedVarying& values : observed) {
+    for (const CapturedVarying& values : probed.observed) {
       const auto found =
           std::find_if(expected.begin(), expected.end(),
                        [&](const OracleVarying& v) { return v.name == values.name; });

@@ -158,9 +158,11 @@ std::vector<Image> GlRenderer::run(GlLinkedProgram& program, const RenderJob& jo
   const GlSamplerPlan samplers =
       planSamplers(program.uniforms.samplers(), job.cubeMaps, job.textures2D);
   const int colourTargets = 1 + static_cast<int>(job.probes.size());
-  GlFramebuffer& target = framebuffers_.get(job.width, job.height, colourTargets);
 
+  // The render target's allocation (on a size's first use) is the draw's,
+  // as the Vulkan backend's is.
   const PhaseScope phase(Phase::Draw);
+  GlFramebuffer& target = framebuffers_.get(job.width, job.height, colourTargets);
   RenderStateGuard guard(program.program.id(), inputs_.vertexArray(), target.id(),
                          samplers.units());
   program.uniforms.apply(job.uniforms);
