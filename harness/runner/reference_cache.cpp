@@ -47,6 +47,9 @@ const ReferenceImage& ReferenceCache::get(const Case& c, const Scene& scene,
 
 ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                                       const ResolvedBindings& bindings) {
+  // Gathering the reference's inputs (copies of the scene's attributes and
+  // textures) is the oracle's work too.
+  const PhaseScope phase(Phase::Oracle);
   const Manifest& m = *c.manifest;
   const DrawingOracles oracles = drawingOracles(m);
   ReferenceInput input{oracles.label,
@@ -63,7 +66,6 @@ ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
                        decalBindings(m, scene),
                        oracles.vertex.get(),
                        oracles.fragment.get()};
-  const PhaseScope phase(Phase::Oracle);
   if (!store_ || oracles.identity.empty()) {
     ++rendered_;
     return renderReferenceImage(input);

@@ -4,6 +4,7 @@
 
 #include "backends/vk/vk_check.h"
 #include "core/errors.h"
+#include "core/phase_clock.h"
 
 namespace snell::vk {
 
@@ -43,6 +44,9 @@ CapturePipelines::~CapturePipelines() {
 VkPipeline CapturePipelines::pipeline(const std::vector<VertexInputFormat>& inputs) {
   if (auto found = pipelines_.find(inputs); found != pipelines_.end()) return found->second;
 
+  // A new vertex input layout is a pipeline to create (lavapipe compiles
+  // its shaders here): the compile phase's, as the program's own.
+  const PhaseScope phase(Phase::Compile);
   const VertexInputDescription vertexInput(inputs);
 
   // Triangles, not points: with validation on, a point list needs the

@@ -1,6 +1,7 @@
 #include "backends/vk/vk_render_pipelines.h"
 
 #include "backends/vk/vk_check.h"
+#include "core/phase_clock.h"
 
 namespace snell::vk {
 
@@ -46,6 +47,9 @@ VkPipeline RenderPipelines::pipeline(const std::vector<VertexInputFormat>& input
   const auto key = std::make_pair(inputs, cullBackFaces);
   if (auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
 
+  // A new vertex input layout is a pipeline to create (lavapipe compiles
+  // its shaders here): the compile phase's, as the program's own.
+  const PhaseScope phase(Phase::Compile);
   const VertexInputDescription vertexInput(inputs);
 
   VkPipelineInputAssemblyStateCreateInfo assembly{};
