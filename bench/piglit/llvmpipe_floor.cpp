@@ -38,13 +38,18 @@ out vec4 colour;
 void main() { colour = vec4(1.0); }
 )";
 
+// The shader, or 0 after printing the compiler's log.
 GLuint compiled(GLenum stage, const char* text) {
   const GLuint shader = glCreateShader(stage);
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  return ok == GL_TRUE ? shader : 0;
+  if (ok == GL_TRUE) return shader;
+  std::array<char, 4096> log{};
+  glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+  std::fprintf(stderr, "llvmpipe_floor: a shader did not compile:\n%s\n", log.data());
+  return 0;
 }
 
 bool nearlyRefract(const std::array<float, 3>& r) {
@@ -88,7 +93,9 @@ int main() {
   GLint linked = GL_FALSE;
   glGetProgramiv(program, GL_LINK_STATUS, &linked);
   if (!vertex || !fragment || linked != GL_TRUE) {
-    std::fprintf(stderr, "llvmpipe_floor: the refract program did not build\n");
+    std::array<char, 4096> log{};
+    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    std::fprintf(stderr, "llvmpipe_floor: the refract program did not build:\n%s\n", log.data());
     return 1;
   }
   glUseProgram(program);
