@@ -16,15 +16,12 @@
 namespace snell {
 namespace {
 
+using float_sets::above;
+using float_sets::below;
 using float_sets::up;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kLn2 = 0.69314718055994530942;
-
-// libm's exp2, log2 and 1/sqrt in double are within a couple of double ULPs;
-// four ULPs outward keep the "exact" range a true bound of the real one.
-double below(double x) { return x - std::fabs(x) * 0x1p-50; }
-double above(double x) { return x + std::fabs(x) * 0x1p-50; }
 
 double magnitude(const Interval& x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); }
 double idealMagnitude(const Interval& x) {

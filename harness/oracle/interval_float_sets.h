@@ -24,6 +24,11 @@ struct Range {
 // x with two double ULPs of margin away from 0: for bounds computed with a
 // few double operations.
 inline double up(double x);
+// x four double ULPs below and above: libm's exp2, log2, sqrt and 1/sqrt
+// in double are within a couple of double ULPs, so these keep an "exact"
+// range made with them a true bound of the real one.
+inline double below(double x);
+inline double above(double x);
 
 // 2^-126 when [lo, hi] holds values a flush to zero may change, else 0.
 inline double flushError(double lo, double hi);
@@ -90,6 +95,8 @@ inline double doubleAbove(Exact x) { return x.error > 0 ? fp32_bits::nextUp(x.va
 }  // namespace detail
 
 inline double up(double x) { return x + std::fabs(x) * 0x1p-51; }
+inline double below(double x) { return x - std::fabs(x) * 0x1p-50; }
+inline double above(double x) { return x + std::fabs(x) * 0x1p-50; }
 
 inline double flushError(double lo, double hi) {
   const bool reachesDenormals = lo < kFp32MinNormal && hi > -kFp32MinNormal;

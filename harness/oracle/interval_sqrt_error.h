@@ -26,10 +26,8 @@ inline double sqrtErrorBound(double smallest, double err, double hi, double lo, 
   // a relative error |delta| <= 2 gap(r) / r <= 2^-22 (r >= 2^-64 is
   // normal), which moves 1/r by |delta| / (1 - |delta|) of its value: a
   // bound relative to the result, whatever the smallest argument (at x =
-  // 0 the result is exactly 0). The largest root is sqrt(hi), four double
-  // ULPs outward.
-  const double root = std::sqrt(hi);
-  const double sMax = root + std::fabs(root) * 0x1p-50;
+  // 0 the result is exactly 0).
+  const double sMax = float_sets::above(std::sqrt(hi));
   const double delta = 0x1p-22;
   const double own = up(sMax * delta / (1.0 - delta) + 2.5 * fp32_bits::gapAbove(rootHi) +
                         float_sets::flushError(lo, rootHi));

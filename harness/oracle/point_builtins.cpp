@@ -16,6 +16,8 @@
 namespace snell {
 namespace {
 
+using float_sets::above;
+using float_sets::below;
 using float_sets::Range;
 using float_sets::up;
 
@@ -50,10 +52,6 @@ struct Parts {
 };
 
 double maxAbs(Range r) { return std::max(std::fabs(r.lo), std::fabs(r.hi)); }
-
-// interval_builtins.cpp's below() and above().
-double below(double x) { return x - std::fabs(x) * 0x1p-50; }
-double above(double x) { return x + std::fabs(x) * 0x1p-50; }
 
 // closedParts() of a value that is not a constant expression.
 Parts closedParts(const Closed& v, PrecisionRules rules) {

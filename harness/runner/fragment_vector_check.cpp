@@ -68,9 +68,12 @@ std::vector<float> valuesAt(const Image& probe, const std::vector<Pixel>& pixels
   return data;
 }
 
+// Whether a probe's write reached pixel (x, y): its alpha is 1 there.
+bool written(const Image& probe, int x, int y) { return probe.at(x, y)[3] == 1.0f; }
+
 // The probes' images turned into what the oracle and the comparison read:
-// the pixels where every input of every oracle was written (alpha 1 marks a
-// write), the oracles' inputs there, and the captured outputs.
+// the pixels where every input of every oracle was written, the oracles'
+// inputs there, and the captured outputs.
 struct ProbeValues {
   std::vector<Pixel> pixels;
   AttributeMap inputs;
@@ -97,7 +100,7 @@ ProbeValues probeValues(const Manifest& m, const Scene& scene,
   for (int y = 0; y < scene.height; ++y)
     for (int x = 0; x < scene.width; ++x)
       if (std::all_of(inputProbes.begin(), inputProbes.end(),
-                      [&](const Image* probe) { return probe->at(x, y)[3] == 1.0f; }))
+                      [&](const Image* probe) { return written(*probe, x, y); }))
         found.pixels.push_back({x, y});
 
   const auto isInput = [&](const FragmentCapture& capture) {
@@ -116,7 +119,7 @@ ProbeValues probeValues(const Manifest& m, const Scene& scene,
     }
     const std::size_t missing = static_cast<std::size_t>(
         std::count_if(found.pixels.begin(), found.pixels.end(),
-                      [&](const Pixel& p) { return outcome.probes[k].at(p.x, p.y)[3] != 1.0f; }));
+                      [&](const Pixel& p) { return !written(outcome.probes[k], p.x, p.y); }));
     if (missing)
       found.unwritten += fmt::format(
           "{}: not written at {} of the {} pixels where the oracle's "
