@@ -8,7 +8,10 @@
 // could gain over piglit, whatever it does after the driver is up.
 //
 // Prints the vector read back; exit 0 when it is refract()'s, 1 when the
-// driver gave something else or failed.
+// driver gave something else or failed. `snell_llvmpipe_floor ETA` checks it
+// against refract() with another eta than the shader's 0.66 (its test shows
+// the check refusing a wrong vector that way); 2 for an ETA that is not a
+// number.
 #ifndef GL_GLEXT_PROTOTYPES
 #define GL_GLEXT_PROTOTYPES 1
 #endif
@@ -19,6 +22,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace {
 
@@ -52,8 +56,8 @@ GLuint compiled(GLenum stage, const char* text) {
   return 0;
 }
 
-bool nearlyRefract(const std::array<float, 3>& r) {
-  const double eta = 0.66, d = -0.8;
+bool nearlyRefract(const std::array<float, 3>& r, double eta) {
+  const double d = -0.8;
   const double k = 1.0 - eta * eta * (1.0 - d * d);
   const double t = eta * d + std::sqrt(k);
   const std::array<double, 3> expected{eta * 0.6, eta * -0.8 - t, 0.0};
@@ -64,7 +68,16 @@ bool nearlyRefract(const std::array<float, 3>& r) {
 
 }  // namespace
 
-int main() {
+int main(int argc, char** argv) {
+  double eta = 0.66;
+  if (argc > 1) {
+    char* end = nullptr;
+    eta = std::strtod(argv[1], &end);
+    if (argc > 2 || end == argv[1] || *end != '\0') {
+      std::fprintf(stderr, "usage: snell_llvmpipe_floor [ETA], ETA a number (default 0.66)\n");
+      return 2;
+    }
+  }
   const int attributes[] = {OSMESA_FORMAT,
                             OSMESA_RGBA,
                             OSMESA_DEPTH_BITS,
@@ -128,7 +141,7 @@ int main() {
   OSMesaDestroyContext(context);
 
   std::printf("%.9g %.9g %.9g\n", refracted[0], refracted[1], refracted[2]);
-  if (error != GL_NO_ERROR || !nearlyRefract(refracted)) {
+  if (error != GL_NO_ERROR || !nearlyRefract(refracted, eta)) {
     std::fprintf(stderr, "llvmpipe_floor: GL error 0x%x, or not refract()'s vector\n", error);
     return 1;
   }
