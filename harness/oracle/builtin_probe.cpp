@@ -101,7 +101,11 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
     }
     result.ways.push_back(std::move(way));
   });
-  if (paths.mergedToHull()) result.ways.erase(result.ways.begin(), result.ways.end() - 1);
+  if (paths.mergedToHull()) {
+    const BuiltinWay hull = result.ways.back();
+    result.ways.clear();
+    result.ways.push_back(hull);
+  }
   result.lo = result.ways[0].lo;
   result.hi = result.ways[0].hi;
   result.undefined = result.ways[0].undefined;

@@ -28,7 +28,9 @@ struct BuiltinResult {
   Components<float> strict;   // fp32 evaluation of the defining formula
   Components<double> lo, hi;  // fp32 results the spec allows, per component (the hull of the ways)
   Components<bool> undefined;
-  std::vector<BuiltinWay> ways;  // one, or each way an undecidable branch may go
+  // One, or each way an undecidable branch may go: reflect() has no
+  // branch and refract() one (k < 0.0), so there are at most two.
+  InlineVector<BuiltinWay, 2> ways;
 
   // Whether a driver's vector fits one way entirely.
   bool allows(std::span<const float> vector) const;

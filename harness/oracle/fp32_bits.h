@@ -30,17 +30,29 @@ inline int biasedExponent(double x) { return static_cast<int>((bitsOf(x) >> 52) 
 // std::nextafter(x, +inf) and std::nextafter(x, -inf) for doubles (glibc's
 // results, -0 included: the step up from the smallest negative denormal is
 // -0).
+// A finite x other than 0 (nearly every one the oracle steps) is one
+// compare: its step away from 0 is +1 on the encoding, toward 0 is -1.
+inline constexpr std::uint64_t kDoubleInfinityBits = 0x7ff0000000000000;
+inline bool finiteNonZero(std::uint64_t bits) {
+  return (bits & ~kDoubleSignBit) - 1 < kDoubleInfinityBits - 1;
+}
+// +1 for a positive encoding, -1 (all ones) for a negative one.
+inline std::uint64_t awayFromZero(std::uint64_t bits) {
+  return static_cast<std::uint64_t>(static_cast<std::int64_t>(bits) >> 63) | 1;
+}
 inline double nextUp(double x) {
+  const std::uint64_t bits = bitsOf(x);
+  if (finiteNonZero(bits)) return doubleOf(bits + awayFromZero(bits));
   if (x != x || x == std::numeric_limits<double>::infinity()) return x;
   if (x == 0.0) return std::numeric_limits<double>::denorm_min();
-  const std::uint64_t bits = bitsOf(x);
-  return doubleOf(x > 0.0 ? bits + 1 : bits - 1);
+  return doubleOf(bits - 1);  // -inf
 }
 inline double nextDown(double x) {
+  const std::uint64_t bits = bitsOf(x);
+  if (finiteNonZero(bits)) return doubleOf(bits - awayFromZero(bits));
   if (x != x || x == -std::numeric_limits<double>::infinity()) return x;
   if (x == 0.0) return -std::numeric_limits<double>::denorm_min();
-  const std::uint64_t bits = bitsOf(x);
-  return doubleOf(x > 0.0 ? bits - 1 : bits + 1);
+  return doubleOf(bits - 1);  // +inf
 }
 
 // The same for a float that is not NaN (what std::nextafter(f, +-inf) gives).
@@ -73,23 +85,6 @@ inline double powerOfTwoAbove(double x) {
   return doubleOf(static_cast<std::uint64_t>(biasedExponent(x) + 1) << 52);
 }
 
-inline double gapAbove(double x) {
-  const double a = x < 0.0 ? -x : x;
-  if (a != a) return a;
-  if (a < kFp32MinNormal) return kFp32MinDenormal;
-  if (a > kFp32Max) return 0x1p104;
-  // a = 1.m * 2^(E - 1023), and the float gap in that binade is
-  // 2^(E - 1023 - 23): the exponent field E - 23 with a zero mantissa.
-  return doubleOf(static_cast<std::uint64_t>(biasedExponent(a) - 23) << 52);
-}
-
-inline double ulp(double x) {
-  const double gap = gapAbove(x);
-  const double a = x < 0.0 ? -x : x;
-  const bool powerOfTwo = a > kFp32MinNormal && a <= kFp32Max && (bitsOf(a) & kDoubleMantissa) == 0;
-  return powerOfTwo ? gap * 0.5 : gap;
-}
-
 // Whether |x| is a normal float's magnitude or between two of them:
 // [2^-126, kFp32Max]. There the fp32 grid is the double grid with the low
 // 29 mantissa bits cleared, so a directed rounding to float is integer
@@ -102,6 +97,33 @@ inline bool inNormalFloatRange(std::uint64_t bits) {
   constexpr std::uint64_t kLowest = std::bit_cast<std::uint64_t>(kFp32MinNormal);
   constexpr std::uint64_t kHighest = std::bit_cast<std::uint64_t>(kFp32Max);
   return (bits & ~kDoubleSignBit) - kLowest <= kHighest - kLowest;
+}
+
+// The float gap in |x|'s binade: 2^-149 below the normal floats, 2^104
+// past them.
+inline double gapAbove(double x) {
+  // a = 1.m * 2^(E - 1023), and the float gap in that binade is
+  // 2^(E - 1023 - 23): the exponent field E - 23 with a zero mantissa.
+  const std::uint64_t bits = bitsOf(x);
+  if (inNormalFloatRange(bits)) return doubleOf((((bits >> 52) & 0x7ff) - 23) << 52);
+  const double a = x < 0.0 ? -x : x;
+  if (a != a) return a;
+  if (a < kFp32MinNormal) return kFp32MinDenormal;
+  return 0x1p104;  // past the largest float
+}
+
+inline double ulp(double x) {
+  const double gap = gapAbove(x);
+  const double a = x < 0.0 ? -x : x;
+  const bool powerOfTwo = a > kFp32MinNormal && a <= kFp32Max && (bitsOf(a) & kDoubleMantissa) == 0;
+  return powerOfTwo ? gap * 0.5 : gap;
+}
+
+// Whether x is a normal float or a zero of either sign (its low 29
+// mantissa bits clear, its exponent in the float range).
+inline bool isZeroOrNormalFloat(double x) {
+  const std::uint64_t bits = bitsOf(x);
+  return (bits & kFloatDropMask) == 0 && (inNormalFloatRange(bits) || (bits << 1) == 0);
 }
 
 // Rounds the magnitude toward zero, then one float step away from zero

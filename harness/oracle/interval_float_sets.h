@@ -124,6 +124,14 @@ inline Range exactProductRange(double alo, double ahi, double blo, double bhi) {
     if (std::isnan(p.value)) return {detail::kNaN, detail::kNaN};
     return {detail::doubleBelow(p), detail::doubleAbove(p)};
   }
+  // Two floats multiply exactly in double (at most 48 significant bits, and
+  // no product of normal floats outside 2^-252 to 2^256): the products are
+  // their own bounds, with no error to find (an fma each, a call into libm).
+  if (fp32_bits::isZeroOrNormalFloat(alo) && fp32_bits::isZeroOrNormalFloat(ahi) &&
+      fp32_bits::isZeroOrNormalFloat(blo) && fp32_bits::isZeroOrNormalFloat(bhi)) {
+    const double p[4] = {alo * blo, alo * bhi, ahi * blo, ahi * bhi};
+    return {std::min({p[0], p[1], p[2], p[3]}), std::max({p[0], p[1], p[2], p[3]})};
+  }
   detail::Exact products[4];
   int count = 0;
   products[count++] = detail::exactProduct(alo, blo);

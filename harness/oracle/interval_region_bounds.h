@@ -41,8 +41,11 @@ inline double gammaBound(int k) {
 namespace region_detail {
 
 // The bounds are sums of a few products of doubles: two double ULPs of
-// margin per step keep them upper bounds of the real quantities.
-inline double up(double x) { return x + std::fabs(x) * 0x1p-51; }
+// margin per step keep them upper bounds of the real quantities. Every
+// bound is at least 0, so the margin is one multiplication: for x = 0 or
+// x >= 2^-971, x * 2^-51 is exact and x * (1 + 2^-51) rounds the same real
+// number as x + |x| * 2^-51 does; below that it still rounds to at least x.
+inline double up(double x) { return x * (1.0 + 0x1p-51); }
 
 inline int nonNegative(int k) { return std::max(k, 0); }
 

@@ -220,6 +220,34 @@ TEST(Fp32Bits, TabulatedGammaIsTheFormulaBitForBit) {
     EXPECT_TRUE(sameDouble(gammaBound(k), refGamma(k))) << "k = " << k;
 }
 
+TEST(Fp32Bits, ZeroOrNormalFloatIsTheConversionsVerdict) {
+  expectSameEverywhere(
+      "isZeroOrNormalFloat", [](double x) { return fp32_bits::isZeroOrNormalFloat(x) ? 1.0 : 0.0; },
+      [](double x) {
+        const double a = std::fabs(x);
+        const bool normal = a >= kFp32MinNormal && a <= kFp32Max;
+        // The cast is defined inside the float range only.
+        return x == 0.0 || (normal && static_cast<double>(static_cast<float>(x)) == x) ? 1.0 : 0.0;
+      });
+}
+
+// The regions' margin is one multiplication: the same bits as x + |x| 2^-51
+// wherever x * 2^-51 is exact (x = 0 or x >= 2^-971), and never below x.
+TEST(Fp32Bits, TheRegionMarginIsTheAdditionBitForBit) {
+  std::vector<double> exact;
+  for (const std::vector<double>& inputs : {edgeInputs(), randomInputs()}) {
+    for (const double x : inputs) {
+      const double a = std::fabs(x);
+      if (a == 0.0 || a >= 0x1p-971) exact.push_back(a);
+      if (!std::isnan(a)) {
+        EXPECT_GE(region_detail::up(a), a) << std::hexfloat << a;
+      }
+    }
+  }
+  expectSame("region_detail::up", region_detail::up, [](double a) { return a + a * 0x1p-51; },
+             exact);
+}
+
 // The comparison above fails on a wrong value: a gap that is off at powers
 // of two only (the gap below instead of above), and a float neighbour off by
 // one float on negative inputs only.

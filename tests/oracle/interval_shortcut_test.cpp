@@ -160,6 +160,50 @@ TEST(IntervalShortcut, APointTimesARangeGivesTheFourProductsBounds) {
   }
 }
 
+// Two ranges whose ends are floats multiply exactly in double, so
+// exactProductRange takes their four products as they are: the bounds are
+// the error-free transformation's, bit for bit (signed zeros included), for
+// floats of every kind and for ends that are not floats.
+TEST(IntervalShortcut, FloatRangesGiveTheErrorFreeProductsBounds) {
+  const std::vector<float> values = floatsOfEveryKind();
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::size_t> pick(0, values.size() - 1);
+  std::bernoulli_distribution notAFloat(0.2);
+  const auto end = [&] {
+    const double x = values[pick(rng)];
+    return notAFloat(rng) ? x * (1.0 + 0x1p-40) : x;
+  };
+  const auto outward = [](double a, double b, bool low) {
+    const double p = a * b;
+    const double error = std::isfinite(p) ? std::fma(a, b, -p) : 0.0;
+    if (low) return error < 0.0 ? std::nextafter(p, -INFINITY) : p;
+    return error > 0.0 ? std::nextafter(p, INFINITY) : p;
+  };
+  for (int trial = 0; trial < 100000; ++trial) {
+    double alo = end(), ahi = end(), blo = end(), bhi = end();
+    if (ahi < alo) std::swap(alo, ahi);
+    if (bhi < blo) std::swap(blo, bhi);
+    double low = INFINITY;
+    double high = -INFINITY;
+    bool nan = false;
+    for (const double a : {alo, ahi})
+      for (const double b : {blo, bhi}) {
+        nan = nan || std::isnan(a * b);
+        low = std::min(low, outward(a, b, true));
+        high = std::max(high, outward(a, b, false));
+      }
+    const float_sets::Range got = float_sets::exactProductRange(alo, ahi, blo, bhi);
+    const std::string where = "[" + std::to_string(alo) + ", " + std::to_string(ahi) + "] * [" +
+                              std::to_string(blo) + ", " + std::to_string(bhi) + "]";
+    if (nan) {
+      ASSERT_TRUE(std::isnan(got.lo) && std::isnan(got.hi)) << where;
+      continue;
+    }
+    ASSERT_EQ(bitsOf(got.lo), bitsOf(low)) << where;
+    ASSERT_EQ(bitsOf(got.hi), bitsOf(high)) << where;
+  }
+}
+
 // quotientRange takes a point's repeated quotients once: its bounds are the
 // hull of each pair of ends divided alone.
 TEST(IntervalShortcut, APointDividendOrDivisorGivesEveryPairsBounds) {
