@@ -33,15 +33,16 @@ glsl::vec<T, Size> evaluate(Builtin fn, const BuiltinCall& call) {
 // The call's one way from oracle/point_builtins.h, where it answers.
 template <int Size>
 bool onPoints(Builtin fn, const BuiltinCall& call, const std::vector<bool>& ownPath,
-              BuiltinResult& result) {
+              OracleBuild build, BuiltinResult& result) {
   PointBounds bounds;
   if (fn == Builtin::Reflect) {
-    if (!ownPath.empty() || !reflectOnPoints(call.I, call.N, currentPrecisionRules(), bounds))
+    if (!ownPath.empty() ||
+        !reflectOnPoints(call.I, call.N, currentPrecisionRules(), bounds, build))
       return false;
   } else {
     PointRefract refract;
-    if (ownPath.size() != 1 ||
-        !refractOnPoints(call.I, call.N, call.eta, ownPath[0], currentPrecisionRules(), refract))
+    if (ownPath.size() != 1 || !refractOnPoints(call.I, call.N, call.eta, ownPath[0],
+                                                currentPrecisionRules(), refract, build))
       return false;
     bounds = refract;
   }
@@ -59,16 +60,53 @@ bool onPoints(Builtin fn, const BuiltinCall& call, const std::vector<bool>& ownP
   return true;
 }
 
+// The exact value along the path the double evaluation takes itself (its
+// branches recorded in ownPath), and the fp32 evaluation of the formula:
+// flattened once per build (oracle/fma_build.h), as the double-double
+// steps of the exact value are error-free products.
 template <int Size>
-BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road) {
-  // The exact value along the path the double evaluation takes itself.
+struct PointValues {
+  glsl::vec<double, Size> value;
+  glsl::vec<float, Size> strict;
+};
+template <int Size>
+PointValues<Size> pointValues(Builtin fn, const BuiltinCall& call, std::vector<bool>& ownPath) {
+  PointValues<Size> values;
+  {
+    const RecordBranches recording(ownPath);
+    values.value = evaluate<double, Size>(fn, call);
+  }
+  values.strict = evaluate<float, Size>(fn, call);
+  return values;
+}
+template <int Size>
+[[gnu::flatten]] PointValues<Size> pointValuesPortable(Builtin fn, const BuiltinCall& call,
+                                                       std::vector<bool>& ownPath) {
+  return pointValues<Size>(fn, call, ownPath);
+}
+#if SNELL_ORACLE_FMA_BUILD
+template <int Size>
+[[gnu::flatten, gnu::target("fma")]] PointValues<Size> pointValuesFma(Builtin fn,
+                                                                      const BuiltinCall& call,
+                                                                      std::vector<bool>& ownPath) {
+  return pointValues<Size>(fn, call, ownPath);
+}
+#endif
+
+template <int Size>
+BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road,
+                            OracleBuild build) {
   thread_local std::vector<bool> ownPath;
   ownPath.clear();
-  const auto value = [&] {
-    const RecordBranches recording(ownPath);
-    return evaluate<double, Size>(fn, call);
-  }();
-  const auto strict = evaluate<float, Size>(fn, call);
+#if SNELL_ORACLE_FMA_BUILD
+  const PointValues<Size> values = build == OracleBuild::Fma
+                                       ? pointValuesFma<Size>(fn, call, ownPath)
+                                       : pointValuesPortable<Size>(fn, call, ownPath);
+#else
+  const PointValues<Size> values = pointValuesPortable<Size>(fn, call, ownPath);
+#endif
+  const glsl::vec<double, Size>& value = values.value;
+  const glsl::vec<float, Size>& strict = values.strict;
   BuiltinResult result;
   for (int k = 0; k < Size; ++k) {
     result.value.push_back(value[k]);
@@ -76,7 +114,8 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
   }
   // Exact inputs: the same bounds by the shorter road where it answers
   // (one way, the exact evaluation's own).
-  if (road == OracleRoad::Shortest && onPoints<Size>(fn, call, ownPath, result)) return result;
+  if (road == OracleRoad::Shortest && onPoints<Size>(fn, call, ownPath, build, result))
+    return result;
   // Every way an undecidable branch may go, each with the exact value along
   // it. The explorer is kept per thread: its outcome lists keep their
   // memory from one call to the next.
@@ -157,7 +196,8 @@ const BuiltinWay& BuiltinResult::nearestWay(std::span<const float> vector) const
   });
 }
 
-BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules, OracleRoad road) {
+BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules, OracleRoad road,
+                              OracleBuild build) {
   const UsePrecisionRules applied(rules);
   const Builtin fn = parseBuiltin(call.fn);
   if (call.I.size() != call.N.size()) {
@@ -166,13 +206,13 @@ BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules, Ora
   }
   switch (call.I.size()) {
     case 1:
-      return evaluateSized<1>(fn, call, road);
+      return evaluateSized<1>(fn, call, road, build);
     case 2:
-      return evaluateSized<2>(fn, call, road);
+      return evaluateSized<2>(fn, call, road, build);
     case 3:
-      return evaluateSized<3>(fn, call, road);
+      return evaluateSized<3>(fn, call, road, build);
     case 4:
-      return evaluateSized<4>(fn, call, road);
+      return evaluateSized<4>(fn, call, road, build);
     default:
       throw UsageError(fmt::format("{}: I and N have {} components; GLSL allows 1 to 4", call.fn,
                                    call.I.size()));

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "oracle/components.h"
+#include "oracle/fma_build.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -44,8 +45,11 @@ struct BuiltinResult {
 // by side.
 enum class OracleRoad { Shortest, General };
 
-// Throws UsageError for an unknown fn or mismatched lengths.
+// Throws UsageError for an unknown fn or mismatched lengths. `build`:
+// which compiled build of the hottest steps runs (oracle/fma_build.h); the
+// same bits either way.
 BuiltinResult evaluateBuiltin(const BuiltinCall& call, PrecisionRules rules = PrecisionRules::Glsl,
-                              OracleRoad road = OracleRoad::Shortest);
+                              OracleRoad road = OracleRoad::Shortest,
+                              OracleBuild build = fastestOracleBuild());
 
 }  // namespace snell

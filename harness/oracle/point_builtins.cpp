@@ -259,10 +259,9 @@ bool inheritedComponent(const Combined& c, PointBounds& out, std::size_t i) {
   return true;
 }
 
-// glsl::refract(), n = 2 to 4. Flattened: GCC at -O2 kept pendingError,
-// roundedAround and exactProductRange as calls, a third of the time.
+// glsl::refract(), n = 2 to 4.
 template <PrecisionRules rules>
-[[gnu::flatten]] bool refractWith(std::span<const float> I, std::span<const float> N, float eta,
+bool refractWith(std::span<const float> I, std::span<const float> N, float eta,
                                   bool exactTotalInternalReflection, PointRefract& out) {
   const double e = eta;
   // d = dot(N, I), a sum. (Vulkan's inherited() widens its set, which no
@@ -329,7 +328,7 @@ template <PrecisionRules rules>
 
 // glsl::reflect(), n = 2 to 4: I - 2.0 * dot(N, I) * N.
 template <PrecisionRules rules>
-[[gnu::flatten]] bool reflectWith(std::span<const float> I, std::span<const float> N,
+bool reflectWith(std::span<const float> I, std::span<const float> N,
                                   PointBounds& out) {
   Dot dot{};
   if (!dotOfPoints(N, I, rules, dot)) return false;
@@ -364,21 +363,58 @@ bool mirrorable(std::span<const float> I, std::span<const float> N) {
   return true;
 }
 
-}  // namespace
-
-bool reflectOnPoints(std::span<const float> I, std::span<const float> N, PrecisionRules rules,
-                     PointBounds& out) {
-  if (!mirrorable(I, N)) return false;
+bool reflectUnder(PrecisionRules rules, std::span<const float> I, std::span<const float> N,
+                  PointBounds& out) {
   if (rules == PrecisionRules::Vulkan) return reflectWith<PrecisionRules::Vulkan>(I, N, out);
   return reflectWith<PrecisionRules::Glsl>(I, N, out);
 }
-
-bool refractOnPoints(std::span<const float> I, std::span<const float> N, float eta,
-                     bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out) {
-  if (!mirrorable(I, N) || !mirrorable(eta)) return false;
+bool refractUnder(PrecisionRules rules, std::span<const float> I, std::span<const float> N,
+                  float eta, bool exactTotalInternalReflection, PointRefract& out) {
   if (rules == PrecisionRules::Vulkan)
     return refractWith<PrecisionRules::Vulkan>(I, N, eta, exactTotalInternalReflection, out);
   return refractWith<PrecisionRules::Glsl>(I, N, eta, exactTotalInternalReflection, out);
+}
+
+// The roads, flattened (GCC at -O2 kept pendingError, roundedAround and
+// exactProductRange as calls, a third of the time), once per build.
+#define SNELL_POINT_ROADS(suffix, ...)                                                       \
+  __VA_ARGS__ bool reflect##suffix(PrecisionRules rules, std::span<const float> I,          \
+                                   std::span<const float> N, PointBounds& out) {            \
+    return reflectUnder(rules, I, N, out);                                                  \
+  }                                                                                         \
+  __VA_ARGS__ bool refract##suffix(PrecisionRules rules, std::span<const float> I,          \
+                                   std::span<const float> N, float eta, bool exactTir,      \
+                                   PointRefract& out) {                                     \
+    return refractUnder(rules, I, N, eta, exactTir, out);                                   \
+  }
+SNELL_POINT_ROADS(Portable, [[gnu::flatten]])
+#if SNELL_ORACLE_FMA_BUILD
+SNELL_POINT_ROADS(Fma, [[gnu::flatten, gnu::target("fma")]])
+#endif
+#undef SNELL_POINT_ROADS
+
+}  // namespace
+
+bool reflectOnPoints(std::span<const float> I, std::span<const float> N, PrecisionRules rules,
+                     PointBounds& out, OracleBuild build) {
+  if (!mirrorable(I, N)) return false;
+#if SNELL_ORACLE_FMA_BUILD
+  if (build == OracleBuild::Fma) return reflectFma(rules, I, N, out);
+#endif
+  (void)build;
+  return reflectPortable(rules, I, N, out);
+}
+
+bool refractOnPoints(std::span<const float> I, std::span<const float> N, float eta,
+                     bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out,
+                     OracleBuild build) {
+  if (!mirrorable(I, N) || !mirrorable(eta)) return false;
+#if SNELL_ORACLE_FMA_BUILD
+  if (build == OracleBuild::Fma)
+    return refractFma(rules, I, N, eta, exactTotalInternalReflection, out);
+#endif
+  (void)build;
+  return refractPortable(rules, I, N, eta, exactTotalInternalReflection, out);
 }
 
 }  // namespace snell

@@ -24,6 +24,7 @@
 #include <array>
 #include <span>
 
+#include "oracle/fma_build.h"
 #include "oracle/precision_rules.h"
 
 namespace snell {
@@ -35,9 +36,10 @@ struct PointBounds {
 };
 
 // False where the general road must answer. I and N have the same 1 to 4
-// components.
+// components. `build`: which compiled build of this road runs
+// (oracle/fma_build.h); the same bits either way.
 bool reflectOnPoints(std::span<const float> I, std::span<const float> N, PrecisionRules rules,
-                     PointBounds& out);
+                     PointBounds& out, OracleBuild build = fastestOracleBuild());
 
 struct PointRefract : PointBounds {
   // k < 0 for every allowed value: the zero vector.
@@ -48,6 +50,7 @@ struct PointRefract : PointBounds {
 // (double, on the same inputs) took the zero-vector branch; the intervals
 // must agree with it for this road to answer.
 bool refractOnPoints(std::span<const float> I, std::span<const float> N, float eta,
-                     bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out);
+                     bool exactTotalInternalReflection, PrecisionRules rules, PointRefract& out,
+                     OracleBuild build = fastestOracleBuild());
 
 }  // namespace snell

@@ -66,6 +66,19 @@ void expectSameAnswer(const BuiltinResult& shortest, const BuiltinResult& genera
   }
 }
 
+// The shorter road's answer in each of its builds (oracle/fma_build.h)
+// against the general road's: the portable build everywhere, the FMA build
+// where this CPU runs it.
+void expectEachBuildGivesTheGeneralRoadsBits(const BuiltinCall& call, PrecisionRules rules) {
+  const std::string where = describe(call, rules);
+  const BuiltinResult general = evaluateBuiltin(call, rules, OracleRoad::General);
+  expectSameAnswer(evaluateBuiltin(call, rules, OracleRoad::Shortest, OracleBuild::Portable),
+                   general, where + " (portable build)");
+  if (cpuHasFmaInstructions())
+    expectSameAnswer(evaluateBuiltin(call, rules, OracleRoad::Shortest, OracleBuild::Fma), general,
+                     where + " (FMA build)");
+}
+
 // Whether the shorter road answers the call (with the exact evaluation's
 // branch, as evaluateBuiltin gives it).
 bool shortRoadAnswers(const BuiltinCall& call, PrecisionRules rules) {
@@ -152,9 +165,7 @@ TEST(PointBuiltins, GiveTheGeneralRoadsBitsOnRandomCalls) {
         int answered = 0;
         for (int c = 0; c < kCalls; ++c) {
           const BuiltinCall call = calls.next(fn, size);
-          const std::string where = describe(call, rules);
-          expectSameAnswer(evaluateBuiltin(call, rules),
-                           evaluateBuiltin(call, rules, OracleRoad::General), where);
+          expectEachBuildGivesTheGeneralRoadsBits(call, rules);
           if (shortRoadAnswers(call, rules)) ++answered;
           if (HasFailure()) return;
         }
@@ -201,11 +212,9 @@ TEST(PointBuiltins, GiveTheGeneralRoadsBitsOnEdgeCalls) {
   };
   for (PrecisionRules rules : kRules)
     for (BuiltinCall call : calls) {
-      expectSameAnswer(evaluateBuiltin(call, rules),
-                       evaluateBuiltin(call, rules, OracleRoad::General), describe(call, rules));
+      expectEachBuildGivesTheGeneralRoadsBits(call, rules);
       call.fn = "reflect";
-      expectSameAnswer(evaluateBuiltin(call, rules),
-                       evaluateBuiltin(call, rules, OracleRoad::General), describe(call, rules));
+      expectEachBuildGivesTheGeneralRoadsBits(call, rules);
     }
 }
 
@@ -240,6 +249,15 @@ TEST(PointBuiltins, DeclineWhatTheyDoNotMirror) {
     EXPECT_FALSE(refractOnPoints(std::vector<float>{s, d, 0.0f}, N, 1.0f / s, false, rules, out));
     EXPECT_FALSE(refractOnPoints(std::vector<float>{s, d, 0.0f}, N, 1.0f / s, true, rules, out));
   }
+}
+
+// This machine's CPU and the build its calls take. (Where it has no FMA
+// instructions, the tests above hold the portable build alone.)
+TEST(PointBuiltins, TheFmaBuildRunsWhereTheCpuHasIt) {
+  RecordProperty("cpu_has_fma", cpuHasFmaInstructions() ? "yes" : "no");
+  EXPECT_EQ(fastestOracleBuild(),
+            cpuHasFmaInstructions() ? OracleBuild::Fma : OracleBuild::Portable);
+  if (!cpuHasFmaInstructions()) GTEST_SKIP() << "this CPU has no FMA instructions";
 }
 
 // The comparison above sees a bound one float away.
