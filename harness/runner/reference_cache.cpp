@@ -83,11 +83,18 @@ ReferenceImage ReferenceCache::render(const Case& c, const Scene& scene,
 
 ReferenceImage ReferenceCache::renderOrShare(const Case& c, const Scene& scene,
                                              const ResolvedBindings& bindings) {
+  // Its folder, lock and owner file are image files' work.
+  const PhaseScope files(Phase::Images);
   const fs::path dir = outDir_ / c.id;
   fs::create_directories(dir);
   const fs::path color = referenceImagePath(outDir_, c.id), mask = maskImagePath(outDir_, c.id),
                  owner = dir / "reference.run";
-  const FileLock lock(dir / "reference.lock");
+  // Waiting here is waiting for the run's other worker to render the
+  // reference: the reference's time (the oracle's), not this case's own.
+  const FileLock lock = [&] {
+    const PhaseScope waiting(Phase::Oracle);
+    return FileLock(dir / "reference.lock");
+  }();
   const bool sharedThisRun = readWholeFile(owner).value_or("") == runId_;
   // The run's other worker rendered it: with a store, its result is there
   // (render() reads it without decoding an image file).
