@@ -56,7 +56,7 @@ bool onPoints(Builtin fn, const BuiltinCall& call, const std::vector<bool>& ownP
   result.lo = way.lo;
   result.hi = way.hi;
   result.undefined = way.undefined;
-  result.ways.push_back(std::move(way));
+  result.ways.push_back(way);
   return true;
 }
 
@@ -138,7 +138,7 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
       way.hi.push_back(allowed[k].hi);
       way.undefined.push_back(allowed[k].undefined);
     }
-    result.ways.push_back(std::move(way));
+    result.ways.push_back(way);
   });
   if (paths.mergedToHull()) {
     const BuiltinWay hull = result.ways.back();
