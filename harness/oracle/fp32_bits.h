@@ -38,7 +38,7 @@ inline bool finiteNonZero(std::uint64_t bits) {
 }
 // +1 for a positive encoding, -1 (all ones) for a negative one.
 inline std::uint64_t awayFromZero(std::uint64_t bits) {
-  return static_cast<std::uint64_t>(static_cast<std::int64_t>(bits) >> 63) | 1;
+  return (0 - (bits >> 63)) | 1;
 }
 inline double nextUp(double x) {
   const std::uint64_t bits = bitsOf(x);
