@@ -118,7 +118,9 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
     return result;
   // Every way an undecidable branch may go, each with the exact value along
   // it. The explorer is kept per thread: its outcome lists keep their
-  // memory from one call to the next.
+  // memory from one call to the next. refract's one branch makes at most
+  // two ways, far under kMaxBranchPaths: the explorer never merges them
+  // into a hull here (and `ways` holds two; a third would throw).
   thread_local BranchPaths paths;
   const UseBranchPaths active(&paths);
   paths.explore([&] {
@@ -140,11 +142,6 @@ BuiltinResult evaluateSized(Builtin fn, const BuiltinCall& call, OracleRoad road
     }
     result.ways.push_back(way);
   });
-  if (paths.mergedToHull()) {
-    const BuiltinWay hull = result.ways.back();
-    result.ways.clear();
-    result.ways.push_back(hull);
-  }
   result.lo = result.ways[0].lo;
   result.hi = result.ways[0].hi;
   result.undefined = result.ways[0].undefined;

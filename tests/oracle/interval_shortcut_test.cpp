@@ -127,18 +127,21 @@ TEST(IntervalShortcut, APointProductTakesTheGeneralRoadsBits) {
   }
 }
 
+// a * b's lower (low) or upper bound by the error-free transformation: the
+// product, one double outward where the fma finds it inexact.
+double outward(double a, double b, bool low) {
+  const double p = a * b;
+  const double error = std::isfinite(p) ? std::fma(a, b, -p) : 0.0;
+  if (low) return error < 0.0 ? std::nextafter(p, -INFINITY) : p;
+  return error > 0.0 ? std::nextafter(p, INFINITY) : p;
+}
+
 // exactProductRange takes a point's repeated products once: its bounds are
 // those of all four products, each rounded outward where it is inexact.
 TEST(IntervalShortcut, APointTimesARangeGivesTheFourProductsBounds) {
   const std::vector<float> values = floatsOfEveryKind();
   std::mt19937_64 rng(3);
   std::uniform_int_distribution<std::size_t> pick(0, values.size() - 1);
-  const auto outward = [](double a, double b, bool low) {
-    const double p = a * b;
-    const double error = std::isfinite(p) ? std::fma(a, b, -p) : 0.0;
-    if (low) return error < 0.0 ? std::nextafter(p, -INFINITY) : p;
-    return error > 0.0 ? std::nextafter(p, INFINITY) : p;
-  };
   for (int trial = 0; trial < 20000; ++trial) {
     const double point = values[pick(rng)];
     double lo = values[pick(rng)];
@@ -172,12 +175,6 @@ TEST(IntervalShortcut, FloatRangesGiveTheErrorFreeProductsBounds) {
   const auto end = [&] {
     const double x = values[pick(rng)];
     return notAFloat(rng) ? x * (1.0 + 0x1p-40) : x;
-  };
-  const auto outward = [](double a, double b, bool low) {
-    const double p = a * b;
-    const double error = std::isfinite(p) ? std::fma(a, b, -p) : 0.0;
-    if (low) return error < 0.0 ? std::nextafter(p, -INFINITY) : p;
-    return error > 0.0 ? std::nextafter(p, INFINITY) : p;
   };
   for (int trial = 0; trial < 100000; ++trial) {
     double alo = end(), ahi = end(), blo = end(), bhi = end();
